@@ -1,0 +1,42 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_IO_POLY_DATA_H
+#define CGAL_ADVANCING_FRONT_MESH_2_IO_POLY_DATA_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace IO {
+
+/*!
+\ingroup PkgAdvancingFrontMesh2IO
+
+A planar straight-line graph as stored in a Triangle `.poly` file:
+points, segments joining them (0-based indices into `points`) and hole
+seeds. Coordinates are kept as `double` since this is what the file holds;
+meshing code converts them to the kernel's points once.
+*/
+struct Poly_data
+{
+  std::vector<std::array<double, 2> > points;
+  std::vector<std::array<std::size_t, 2> > segments;
+  std::vector<std::array<double, 2> > holes;
+};
+
+} // namespace IO
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_IO_POLY_DATA_H

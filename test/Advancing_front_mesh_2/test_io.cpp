@@ -1,0 +1,664 @@
+// Tests of the .poly reader/writer and of the mesh writers.
+//
+// The reader is meant to reject every damaged file with the exact line of the
+// damage, so each kind of damage is planted once and the reported position is
+// checked, not only the fact that something was thrown. The writers are
+// checked by parsing their output back: counts, exact coordinates and
+// orientation, since a writer whose output no tool reads is worthless.
+
+#include "afm_test_harness.h"
+
+#include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_vertex_base_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <locale>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Triangulation_vertex_base_2<K> Vb;
+typedef CGAL::Delaunay_mesh_face_base_2<K> Fb;
+typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds> CDT;
+typedef CGAL::Delaunay_mesh_size_criteria_2<CDT> Criteria;
+typedef CGAL::Delaunay_mesher_2<CDT, Criteria> Mesher;
+
+namespace afm_io = CGAL::Advancing_front_mesh_2::IO;
+
+// Files are created in the working directory (the build tree under ctest),
+// with a prefix that no other test uses.
+std::string temp_path(const std::string& name) { return "afm_test_io_" + name; }
+
+void write_text(const std::string& path, const std::string& content)
+{
+  std::ofstream os(path.c_str(), std::ios::binary);
+  os << content;
+  AFM_CHECK_MSG(os.good(), "cannot create " << path);
+}
+
+std::string read_text(const std::string& path)
+{
+  std::ifstream in(path.c_str(), std::ios::binary);
+  AFM_CHECK_MSG(in.good(), "cannot open " << path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+bool file_exists(const std::string& path)
+{
+  std::ifstream in(path.c_str(), std::ios::binary);
+  return in.good();
+}
+
+afm_io::Poly_data parse(const std::string& content, const std::string& name = "test.poly")
+{
+  std::istringstream in(content);
+  return afm_io::read_poly(in, name);
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// ---------------------------------------------------------------------------
+// Reader: valid input
+
+AFM_TEST_CASE(test_io_read_one_based_with_comments_attributes_markers)
+{
+  const std::string poly =
+    "# A square with a square hole, as Triangle writes it.\r\n"
+    "8 2 1 1   # vertices, dimension, attributes, markers\r\n"
+    "\r\n"
+    "1 0 0 10.5 1\r\n"
+    "2 4 0 10.5 1\n"
+    "   3\t4 4 10.5 1   # tabs and trailing comment\n"
+    "4 0 4 10.5 1\n"
+    "# a full-line comment between vertex lines\n"
+    "5 1 1 0 2\n"
+    "6 3 1 0 2\n"
+    "7 3 3 0 2\n"
+    "8 1e0 3.0 -0 2\n"
+    "8 1\n"
+    "1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n"
+    "5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n"
+    "1\n"
+    "1 2 2\n"
+    "\n# trailing comment\n";
+  const afm_io::Poly_data d = parse(poly);
+  AFM_CHECK(d.points.size() == 8);
+  AFM_CHECK(d.points[2][0] == 4 && d.points[2][1] == 4);
+  AFM_CHECK(d.points[7][0] == 1 && d.points[7][1] == 3);
+  AFM_CHECK(d.segments.size() == 8);
+  AFM_CHECK(d.segments[0][0] == 0 && d.segments[0][1] == 1);
+  AFM_CHECK(d.segments[7][0] == 7 && d.segments[7][1] == 4);
+  AFM_CHECK(d.holes.size() == 1);
+  AFM_CHECK(d.holes[0][0] == 2 && d.holes[0][1] == 2);
+}
+
+AFM_TEST_CASE(test_io_read_zero_based)
+{
+  const std::string poly =
+    "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n"
+    "3 0\n0 0 1\n1 1 2\n2 2 0\n"
+    "0\n";
+  const afm_io::Poly_data d = parse(poly);
+  AFM_CHECK(d.points.size() == 3);
+  AFM_CHECK(d.segments.size() == 3);
+  AFM_CHECK(d.segments[0][0] == 0 && d.segments[0][1] == 1);
+  AFM_CHECK(d.segments[2][0] == 2 && d.segments[2][1] == 0);
+  AFM_CHECK(d.holes.empty());
+}
+
+AFM_TEST_CASE(test_io_read_regions_are_ignored)
+{
+  const std::string poly =
+    "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"
+    "3 0\n1 1 2\n2 2 3\n3 3 1\n"
+    "0\n"
+    "2\n"
+    "1 0.2 0.2 7 0.01\n"
+    "2 0.1 0.1 8   # no area constraint\n";
+  const afm_io::Poly_data d = parse(poly);
+  AFM_CHECK(d.points.size() == 3);
+  AFM_CHECK(d.segments.size() == 3);
+  AFM_CHECK(d.holes.empty());
+
+  // An empty regions section is just as valid.
+  const afm_io::Poly_data e = parse("1 2 0 0\n1 0 0\n0 0\n0\n0\n");
+  AFM_CHECK(e.points.size() == 1 && e.segments.empty());
+}
+
+AFM_TEST_CASE(test_io_read_vertices_from_node_file)
+{
+  const std::string base = temp_path("nodes");
+  write_text(base + ".node", "# vertices live here\n3 2 0 1\n0 0 0 1\n1 1 0 1\n2 0 1 1\n");
+  write_text(base + ".poly", "0 2 0 1\n3 0\n1 0 1\n2 1 2\n3 2 0\n0\n");
+  const afm_io::Poly_data d = afm_io::read_poly(base + ".poly");
+  AFM_CHECK(d.points.size() == 3);
+  AFM_CHECK(d.points[1][0] == 1 && d.points[1][1] == 0);
+  // The .node file numbers from 0, so the segment endpoints do too.
+  AFM_CHECK(d.segments.size() == 3 && d.segments[2][0] == 2 && d.segments[2][1] == 0);
+
+  // An error in the .node file names that file and its own line.
+  write_text(base + ".node", "3 2 0 1\n0 0 0 1\n1 1 zero 1\n2 0 1 1\n");
+  bool thrown = false;
+  try {
+    afm_io::read_poly(base + ".poly");
+  } catch(const afm_io::Poly_read_error& e) {
+    thrown = true;
+    AFM_CHECK_MSG(e.file() == base + ".node", e.what());
+    AFM_CHECK_MSG(e.line() == 3, e.what());
+    AFM_CHECK_MSG(std::string(e.what()).find(base + ".node:3: 'zero' is not a number") == 0,
+                  e.what());
+  }
+  AFM_CHECK(thrown);
+
+  // Trailing content after the vertices of a .node file is rejected too.
+  write_text(base + ".node", "1 2 0 0\n1 0 0\n1 0 0\n");
+  write_text(base + ".poly", "0 2 0 0\n0 0\n0\n");
+  thrown = false;
+  try {
+    afm_io::read_poly(base + ".poly");
+  } catch(const afm_io::Poly_read_error& e) {
+    thrown = true;
+    AFM_CHECK_MSG(e.file() == base + ".node" && e.line() == 3, e.what());
+  }
+  AFM_CHECK(thrown);
+
+  std::remove((base + ".node").c_str());
+  thrown = false;
+  try {
+    afm_io::read_poly(base + ".poly");
+  } catch(const afm_io::Poly_read_error& e) {
+    thrown = true;
+    AFM_CHECK_MSG(e.file() == base + ".node" && e.line() == 0, e.what());
+    AFM_CHECK_MSG(e.problem().find("cannot open file") == 0, e.what());
+  }
+  AFM_CHECK(thrown);
+  std::remove((base + ".poly").c_str());
+}
+
+AFM_TEST_CASE(test_io_read_missing_file)
+{
+  bool thrown = false;
+  try {
+    afm_io::read_poly(temp_path("does_not_exist.poly"));
+  } catch(const afm_io::Poly_read_error& e) {
+    thrown = true;
+    AFM_CHECK(e.line() == 0);
+    AFM_CHECK_MSG(std::string(e.what()) ==
+                  temp_path("does_not_exist.poly") + ": cannot open file", e.what());
+  }
+  AFM_CHECK(thrown);
+}
+
+// ---------------------------------------------------------------------------
+// Reader: every kind of damage, with its line
+
+struct Bad_case
+{
+  const char* name;
+  std::string content;
+  std::size_t line;
+  const char* problem; // expected part of the message
+};
+
+// A valid triangle; cases below damage one part of it.
+const std::string tri_vertices = "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n";
+const std::string tri_segments = "3 0\n1 1 2\n2 2 3\n3 3 1\n";
+
+AFM_TEST_CASE(test_io_read_rejects_malformed_input)
+{
+  const std::vector<Bad_case> cases = {
+    {"empty", "", 0, "holds no data"},
+    {"only comments", "# nothing\n\n#\n", 3, "holds no data"},
+    {"truncated vertices",
+     "12 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n5 2 2\n6 3 3\n7 4 4\n",
+     8, "expected 12 vertices, file ends after 7"},
+    {"not a number", "3 2 0 0\n1 0 0\n2 1.0x 0\n3 0 1\n", 3, "'1.0x' is not a number"},
+    {"nan coordinate", "3 2 0 0\n1 0 0\n2 nan 0\n3 0 1\n", 3, "'nan' is not finite"},
+    {"inf coordinate", "3 2 0 0\n1 0 0\n2 1 -inf\n3 0 1\n", 3, "'-inf' is not finite"},
+    {"overflowing coordinate", "3 2 0 0\n1 0 0\n2 1 0\n3 1e999 1\n", 4, "not finite"},
+    {"nan attribute", "1 2 1 0\n1 0 0 nan\n0 0\n0\n", 2, "attribute 'nan' is not finite"},
+    {"negative count", "-3 2 0 0\n", 1, "vertex count -3 is negative"},
+    {"absurd count", "99999999999 2 0 0\n", 1, "is too large"},
+    {"count overflowing long long", "99999999999999999999999 2 0 0\n", 1,
+     "vertex count '99999999999999999999999' is out of range"},
+    {"fractional count", "3.0 2 0 0\n", 1, "'3.0' is not an integer"},
+    {"dimension 3", "3 3 0 0\n", 1, "dimension must be 2, got 3"},
+    {"marker count 2", "3 2 0 2\n", 1, "must be 0 or 1, got 2"},
+    {"negative attributes", "3 2 -1 0\n", 1, "attribute count -1 is negative"},
+    {"short header", "3 2 0\n", 1, "has 3 values, expected 4"},
+    {"vertex line too long", "3 2 0 0\n1 0 0\n2 1 0 5\n3 0 1\n", 3, "has 4 values, expected 3"},
+    {"vertex line too short", "3 2 1 1\n1 0 0 0 0\n2 1 0 0\n", 3, "has 4 values, expected 5"},
+    {"first id not 0 or 1", "3 2 0 0\n2 0 0\n3 1 0\n4 0 1\n", 2, "first vertex id must be 0 or 1, got 2"},
+    {"ids out of order", "3 2 0 0\n1 0 0\n3 1 0\n2 0 1\n", 3, "vertex id 3 is out of order, expected 2"},
+    {"fractional id", "3 2 0 0\n1 0 0\n2.5 1 0\n3 0 1\n", 3, "'2.5' is not an integer"},
+    {"non-integer marker", "1 2 0 1\n1 0 0 b\n", 2, "'b' is not a number"},
+    {"missing segment header", tri_vertices, 4, "expected the segment header"},
+    {"truncated segments", tri_vertices + "3 0\n1 1 2\n", 6, "expected 3 segments, file ends after 1"},
+    {"segment endpoint out of range", tri_vertices + "3 0\n1 1 2\n2 2 4\n3 3 1\n", 7,
+     "segment endpoint 4 is out of range (vertex ids are 1..3)"},
+    {"segment endpoint 0 in 1-based file", tri_vertices + "3 0\n1 1 2\n2 2 3\n3 3 0\n", 8,
+     "segment endpoint 0 is out of range"},
+    {"segment to itself", tri_vertices + "3 0\n1 1 2\n2 2 2\n3 3 1\n", 7,
+     "segment joins vertex 2 to itself"},
+    {"segment marker missing", tri_vertices + "3 1\n1 1 2 5\n2 2 3\n", 7, "has 3 values, expected 4"},
+    {"segment ids out of order", tri_vertices + "3 0\n1 1 2\n1 2 3\n3 3 1\n", 7,
+     "segment id 1 is out of order, expected 2"},
+    {"missing hole header", tri_vertices + tri_segments, 8, "expected the hole header"},
+    {"truncated holes", tri_vertices + tri_segments + "2\n1 0.1 0.1\n", 10,
+     "expected 2 holes, file ends after 1"},
+    {"hole not finite", tri_vertices + tri_segments + "1\n1 0.1 inf\n", 10, "'inf' is not finite"},
+    {"extra hole", tri_vertices + tri_segments + "1\n1 0.1 0.1\n2 0.2 0.2\n", 11,
+     "expected the optional region header"},
+    {"truncated regions", tri_vertices + tri_segments + "0\n2\n1 0.1 0.1 1\n", 11,
+     "expected 2 regions, file ends after 1"},
+    {"region without attribute", tri_vertices + tri_segments + "0\n1\n1 0.1 0.1\n", 11,
+     "has 3 values, expected 4 or 5"},
+    {"garbage after regions", tri_vertices + tri_segments + "0\n0\nend\n", 11,
+     "unexpected content after the last section"},
+    {"binary garbage", std::string("\x7f" "ELF\x01\x02\x00\xff\xfe", 9), 1, "is not a number"},
+    {"NUL inside a number", std::string("3 2 0 0\n1 0 0\n2 1\0" "5 0\n", 20), 3, "is not a number"},
+  };
+
+  for(const Bad_case& c : cases) {
+    bool thrown = false;
+    try {
+      parse(c.content, "file.poly");
+    } catch(const afm_io::Poly_read_error& e) {
+      thrown = true;
+      const std::string what = e.what();
+      const std::string where = c.line == 0 ? std::string("file.poly: ")
+                                            : "file.poly:" + std::to_string(c.line) + ": ";
+      AFM_CHECK_MSG(what.compare(0, where.size(), where) == 0,
+                    c.name << ": got \"" << what << "\", expected it to start with " << where);
+      AFM_CHECK_MSG(e.line() == c.line, c.name << ": " << what);
+      AFM_CHECK_MSG(e.file() == "file.poly", c.name << ": " << what);
+      AFM_CHECK_MSG(what.find(c.problem) != std::string::npos,
+                    c.name << ": got \"" << what << "\", expected \"" << c.problem << "\"");
+      AFM_CHECK_MSG(what == where + e.problem(), c.name << ": " << what);
+    }
+    AFM_CHECK_MSG(thrown, c.name << ": accepted");
+  }
+}
+
+AFM_TEST_CASE(test_io_read_rejects_overlong_line)
+{
+  // A newline-free blob must be refused without being buffered whole.
+  const std::string blob = "3 2 0 0\n" + std::string(3u << 20, '7');
+  bool thrown = false;
+  try {
+    parse(blob, "file.poly");
+  } catch(const afm_io::Poly_read_error& e) {
+    thrown = true;
+    AFM_CHECK_MSG(e.line() == 2 && e.problem().find("longer than") != std::string::npos,
+                  e.what());
+  }
+  AFM_CHECK(thrown);
+
+  // A long comment, however, is harmless.
+  const afm_io::Poly_data d =
+    parse("#" + std::string(3u << 20, 'x') + "\n1 2 0 0\n1 0 0\n0 0\n0\n");
+  AFM_CHECK(d.points.size() == 1);
+}
+
+// ---------------------------------------------------------------------------
+// Writer: round trip
+
+// Digit grouping a writer must not apply to its numbers.
+struct Grouping_numpunct : std::numpunct<char>
+{
+  char do_decimal_point() const override { return ','; }
+  char do_thousands_sep() const override { return '.'; }
+  std::string do_grouping() const override { return "\3"; }
+};
+
+AFM_TEST_CASE(test_io_poly_round_trip_is_exact)
+{
+  afm_io::Poly_data d;
+  const double values[] = {0.1, 1.0 / 3.0, -2.5e-300, 123456789.123456789, -0.0,
+                           std::nextafter(1.0, 2.0), 4.9406564584124654e-324,
+                           1.7976931348623157e308, 1e22, -7};
+  const std::size_t nv = sizeof(values) / sizeof(values[0]);
+  for(std::size_t i = 0; i < nv; ++i)
+    d.points.push_back({{values[i], values[(i + 3) % nv]}});
+  for(std::size_t i = 0; i < nv; ++i)
+    d.segments.push_back({{i, (i + 1) % nv}});
+  d.holes.push_back({{0.7, -1.0 / 7.0}});
+
+  std::ostringstream os;
+  os.imbue(std::locale(std::locale::classic(), new Grouping_numpunct));
+  os.precision(3);
+  afm_io::write_poly(os, d);
+  AFM_CHECK_MSG(os.precision() == 3, "stream state not restored");
+  const std::string text = os.str();
+  AFM_CHECK_MSG(text.compare(0, 9, "10 2 0 0\n") == 0, text.substr(0, 40));
+
+  const afm_io::Poly_data r = parse(text);
+  AFM_CHECK(r.points.size() == d.points.size());
+  for(std::size_t i = 0; i < nv; ++i)
+    AFM_CHECK_MSG(same_bits(r.points[i][0], d.points[i][0]) &&
+                  same_bits(r.points[i][1], d.points[i][1]), "point " << i);
+  AFM_CHECK(r.segments == d.segments);
+  AFM_CHECK(r.holes.size() == 1 && same_bits(r.holes[0][0], 0.7) &&
+            same_bits(r.holes[0][1], -1.0 / 7.0));
+
+  // Through a file as well.
+  const std::string path = temp_path("round_trip.poly");
+  afm_io::write_poly(path, d);
+  const afm_io::Poly_data f = afm_io::read_poly(path);
+  AFM_CHECK(f.segments == d.segments && f.points.size() == nv);
+  for(std::size_t i = 0; i < nv; ++i)
+    AFM_CHECK(same_bits(f.points[i][0], d.points[i][0]));
+  std::remove(path.c_str());
+}
+
+AFM_TEST_CASE(test_io_write_poly_rejects_invalid_data)
+{
+  afm_io::Poly_data d;
+  d.points = {{{0, 0}}, {{1, 0}}};
+  d.segments = {{{0, 2}}};
+  std::ostringstream os;
+  bool thrown = false;
+  try { afm_io::write_poly(os, d); } catch(const std::invalid_argument&) { thrown = true; }
+  AFM_CHECK(thrown && os.str().empty());
+
+  d.segments = {{{1, 1}}};
+  thrown = false;
+  try { afm_io::write_poly(os, d); } catch(const std::invalid_argument&) { thrown = true; }
+  AFM_CHECK(thrown);
+
+  d.segments = {{{0, 1}}};
+  d.points[1][1] = std::numeric_limits<double>::quiet_NaN();
+  thrown = false;
+  try { afm_io::write_poly(os, d); } catch(const std::invalid_argument&) { thrown = true; }
+  AFM_CHECK(thrown);
+
+  thrown = false;
+  d.points[1][1] = 0;
+  try { afm_io::write_poly("/nonexistent-dir-afm/x.poly", d); }
+  catch(const std::runtime_error& e) {
+    thrown = std::string(e.what()) == "cannot write /nonexistent-dir-afm/x.poly";
+  }
+  AFM_CHECK(thrown);
+}
+
+// ---------------------------------------------------------------------------
+// Mesh writers
+
+// Square [0,4]^2 around the hole [1,3]^2; without refinement the annulus has
+// exactly 8 vertices and 8 triangles.
+void build_square_with_hole(CDT& cdt, bool refine)
+{
+  const CDT::Point outer[4] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  const CDT::Point inner[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+  for(int i = 0; i < 4; ++i) {
+    cdt.insert_constraint(outer[i], outer[(i + 1) % 4]);
+    cdt.insert_constraint(inner[i], inner[(i + 1) % 4]);
+  }
+  std::vector<CDT::Point> seeds = {CDT::Point(2, 2)};
+  if(refine)
+    CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), Criteria(0.125, 0.3));
+  else
+    Mesher::mark_facets(cdt, seeds.begin(), seeds.end());
+}
+
+std::size_t in_domain_faces(const CDT& cdt)
+{
+  std::size_t n = 0;
+  for(CDT::Finite_faces_iterator f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain()) ++n;
+  return n;
+}
+
+std::set<std::pair<double, double> > cdt_points(const CDT& cdt)
+{
+  std::set<std::pair<double, double> > s;
+  for(CDT::Finite_vertices_iterator v = cdt.finite_vertices_begin();
+      v != cdt.finite_vertices_end(); ++v)
+    s.insert(std::make_pair(v->point().x(), v->point().y()));
+  return s;
+}
+
+AFM_TEST_CASE(test_io_write_off)
+{
+  CDT cdt;
+  build_square_with_hole(cdt, false);
+  AFM_CHECK(in_domain_faces(cdt) == 8);
+
+  std::ostringstream os;
+  afm_io::write_OFF(os, cdt);
+  std::istringstream in(os.str());
+  std::string magic;
+  std::size_t nv = 0, nf = 0, ne = 1;
+  in >> magic >> nv >> nf >> ne;
+  AFM_CHECK(magic == "OFF" && nv == 8 && nf == 8 && ne == 0);
+  std::vector<std::array<double, 2> > p(nv);
+  for(std::size_t i = 0; i < nv; ++i) {
+    double z = 1;
+    in >> p[i][0] >> p[i][1] >> z;
+    AFM_CHECK(z == 0);
+  }
+  for(std::size_t i = 0; i < nf; ++i) {
+    std::size_t three = 0, a = nv, b = nv, c = nv;
+    in >> three >> a >> b >> c;
+    AFM_CHECK(three == 3 && a < nv && b < nv && c < nv);
+    const double orient = (p[b][0] - p[a][0]) * (p[c][1] - p[a][1]) -
+                          (p[b][1] - p[a][1]) * (p[c][0] - p[a][0]);
+    AFM_CHECK_MSG(orient > 0, "face " << i << " is not counter-clockwise");
+  }
+  AFM_CHECK(in.good());
+  std::string rest;
+  in >> rest;
+  AFM_CHECK(rest.empty());
+
+  // Exact coordinates on a refined mesh whose points are not short decimals.
+  CDT fine;
+  build_square_with_hole(fine, true);
+  std::ostringstream fos;
+  afm_io::write_OFF(fos, fine);
+  std::istringstream fin(fos.str());
+  fin >> magic >> nv >> nf >> ne;
+  AFM_CHECK(nf == in_domain_faces(fine) && nf > 8);
+  const std::set<std::pair<double, double> > all = cdt_points(fine);
+  for(std::size_t i = 0; i < nv; ++i) {
+    std::string xs, ys, zs;
+    fin >> xs >> ys >> zs;
+    const double x = std::strtod(xs.c_str(), nullptr), y = std::strtod(ys.c_str(), nullptr);
+    AFM_CHECK_MSG(all.count(std::make_pair(x, y)) == 1, xs << " " << ys);
+  }
+
+  // Two writes are identical: the numbering does not depend on addresses.
+  std::ostringstream again;
+  afm_io::write_OFF(again, fine);
+  AFM_CHECK(again.str() == fos.str());
+}
+
+AFM_TEST_CASE(test_io_write_node_ele)
+{
+  CDT cdt;
+  build_square_with_hole(cdt, true);
+  const std::size_t nf = in_domain_faces(cdt);
+
+  const std::string base = temp_path("mesh");
+  afm_io::write_triangle_node_ele(base, cdt);
+  std::istringstream node(read_text(base + ".node"));
+  std::istringstream ele(read_text(base + ".ele"));
+  std::size_t nv = 0, dim = 0, na = 1, nm = 1;
+  node >> nv >> dim >> na >> nm;
+  AFM_CHECK(dim == 2 && na == 0 && nm == 0 && nv == cdt.number_of_vertices());
+  const std::set<std::pair<double, double> > all = cdt_points(cdt);
+  for(std::size_t i = 1; i <= nv; ++i) {
+    std::size_t id = 0;
+    std::string xs, ys;
+    node >> id >> xs >> ys;
+    AFM_CHECK(id == i);
+    AFM_CHECK(all.count(std::make_pair(std::strtod(xs.c_str(), nullptr),
+                                       std::strtod(ys.c_str(), nullptr))) == 1);
+  }
+  std::size_t ne = 0, corners = 0, attributes = 1;
+  ele >> ne >> corners >> attributes;
+  AFM_CHECK(ne == nf && corners == 3 && attributes == 0);
+  for(std::size_t i = 1; i <= ne; ++i) {
+    std::size_t id = 0, a = 0, b = 0, c = 0;
+    ele >> id >> a >> b >> c;
+    AFM_CHECK(id == i && a >= 1 && a <= nv && b >= 1 && b <= nv && c >= 1 && c <= nv);
+  }
+  AFM_CHECK(!ele.fail());
+
+  // The stream version writes the same content.
+  std::ostringstream node_os, ele_os;
+  afm_io::write_triangle_node_ele(node_os, ele_os, cdt);
+  AFM_CHECK(node_os.str() == read_text(base + ".node"));
+  AFM_CHECK(ele_os.str() == read_text(base + ".ele"));
+  std::remove((base + ".node").c_str());
+  std::remove((base + ".ele").c_str());
+}
+
+AFM_TEST_CASE(test_io_write_gmsh_msh)
+{
+  CDT cdt;
+  build_square_with_hole(cdt, false);
+  std::ostringstream os;
+  afm_io::write_gmsh_msh(os, cdt);
+  std::istringstream in(os.str());
+  std::string line;
+  std::vector<std::string> lines;
+  while(std::getline(in, line))
+    lines.push_back(line);
+  // 3 format lines, 4 entity lines, 4 + 8 + 8 node lines, 4 + 8 element lines.
+  AFM_CHECK_MSG(lines.size() == 39, lines.size());
+  AFM_CHECK(lines[0] == "$MeshFormat" && lines[1] == "4.1 0 8" && lines[2] == "$EndMeshFormat");
+  AFM_CHECK(lines[3] == "$Entities" && lines[4] == "0 0 1 0");
+  AFM_CHECK_MSG(lines[5] == "1 0 0 0 4 4 0 0 0", lines[5]);
+  AFM_CHECK(lines[6] == "$EndEntities" && lines[7] == "$Nodes");
+  AFM_CHECK(lines[8] == "1 8 1 8" && lines[9] == "2 1 0 8");
+  for(int i = 0; i < 8; ++i)
+    AFM_CHECK(lines[10 + i] == std::to_string(i + 1));
+  AFM_CHECK(lines[26] == "$EndNodes" && lines[27] == "$Elements");
+  AFM_CHECK(lines[28] == "1 8 1 8" && lines[29] == "2 1 2 8");
+  for(int i = 0; i < 8; ++i) {
+    std::istringstream el(lines[30 + i]);
+    int tag = 0, a = 0, b = 0, c = 0;
+    el >> tag >> a >> b >> c;
+    AFM_CHECK(tag == i + 1 && a >= 1 && a <= 8 && b >= 1 && b <= 8 && c >= 1 && c <= 8 && el);
+  }
+  AFM_CHECK(lines[38] == "$EndElements");
+}
+
+AFM_TEST_CASE(test_io_write_svg)
+{
+  CDT cdt;
+  build_square_with_hole(cdt, true);
+  afm_io::SVG_options options;
+  options.title = "square <with> \"hole\" & more";
+  std::ostringstream os;
+  afm_io::write_SVG(os, cdt, options);
+  const std::string svg = os.str();
+  AFM_CHECK(svg.compare(0, 4, "<svg") == 0);
+  AFM_CHECK(svg.size() > 8 && svg.compare(svg.size() - 7, 7, "</svg>\n") == 0);
+  AFM_CHECK(svg.find("<title>square &lt;with&gt; &quot;hole&quot; &amp; more</title>") !=
+            std::string::npos);
+  // One path per layer: fill, triangle edges, constrained edges.
+  std::size_t paths = 0;
+  for(std::size_t p = svg.find("<path"); p != std::string::npos; p = svg.find("<path", p + 1))
+    ++paths;
+  AFM_CHECK_MSG(paths == 3, paths);
+  AFM_CHECK(svg.find("<polygon") == std::string::npos);
+  AFM_CHECK(svg.find("width=\"1200\"") != std::string::npos);
+  AFM_CHECK(svg.find("nan") == std::string::npos && svg.find("inf") == std::string::npos);
+
+  // A window keeps the picture valid and drops what lies outside it.
+  afm_io::SVG_options zoom;
+  zoom.has_window = true;
+  zoom.xmin = 0; zoom.ymin = 0; zoom.xmax = 0.5; zoom.ymax = 0.5;
+  std::ostringstream zs;
+  afm_io::write_SVG(zs, cdt, zoom);
+  const std::string z = zs.str();
+  AFM_CHECK(z.compare(0, 4, "<svg") == 0 && z.compare(z.size() - 7, 7, "</svg>\n") == 0);
+  AFM_CHECK(z.size() < svg.size());
+
+  // A tiny window far from the mesh: only the header and footer remain.
+  zoom.xmin = 100; zoom.xmax = 100.001; zoom.ymin = -50; zoom.ymax = -49.999;
+  std::ostringstream empty_os;
+  afm_io::write_SVG(empty_os, cdt, zoom);
+  AFM_CHECK(empty_os.str().find("<path") == std::string::npos);
+
+  bool thrown = false;
+  zoom.xmax = zoom.xmin;
+  try { std::ostringstream s; afm_io::write_SVG(s, cdt, zoom); }
+  catch(const std::invalid_argument&) { thrown = true; }
+  AFM_CHECK(thrown);
+
+  // An empty triangulation still gives a picture.
+  CDT none;
+  std::ostringstream ns;
+  afm_io::write_SVG(ns, none);
+  AFM_CHECK(ns.str().compare(0, 4, "<svg") == 0);
+}
+
+AFM_TEST_CASE(test_io_write_mesh_by_extension)
+{
+  CDT cdt;
+  build_square_with_hole(cdt, true);
+  const std::size_t nf = in_domain_faces(cdt);
+
+  afm_io::write_mesh(temp_path("out.off"), cdt);
+  AFM_CHECK(read_text(temp_path("out.off")).compare(0, 4, "OFF\n") == 0);
+
+  afm_io::write_mesh(temp_path("out.VTU"), cdt);
+  const std::string vtu = read_text(temp_path("out.VTU"));
+  AFM_CHECK(vtu.find("<VTKFile") != std::string::npos);
+  // CGAL's VTU writer adds the constrained edges as line cells.
+  const std::size_t nc = static_cast<std::size_t>(
+    std::distance(cdt.constrained_edges_begin(), cdt.constrained_edges_end()));
+  AFM_CHECK(vtu.find("NumberOfCells=\"" + std::to_string(nf + nc) + "\"") != std::string::npos);
+
+  afm_io::write_mesh(temp_path("out.ele"), cdt);
+  AFM_CHECK(file_exists(temp_path("out.node")) && file_exists(temp_path("out.ele")));
+
+  afm_io::write_mesh(temp_path("out.msh"), cdt);
+  AFM_CHECK(read_text(temp_path("out.msh")).compare(0, 20, "$MeshFormat\n4.1 0 8\n") == 0);
+
+  afm_io::write_mesh(temp_path("out.svg"), cdt);
+  AFM_CHECK(read_text(temp_path("out.svg")).compare(0, 4, "<svg") == 0);
+
+  bool thrown = false;
+  try { afm_io::write_mesh(temp_path("out.stl"), cdt); }
+  catch(const std::invalid_argument&) { thrown = true; }
+  AFM_CHECK(thrown && !file_exists(temp_path("out.stl")));
+
+  thrown = false;
+  try { afm_io::write_mesh("/nonexistent-dir-afm/out.off", cdt); }
+  catch(const std::runtime_error& e) {
+    thrown = std::string(e.what()) == "cannot write /nonexistent-dir-afm/out.off";
+  }
+  AFM_CHECK(thrown);
+
+  for(const char* ext : {"off", "VTU", "node", "ele", "msh", "svg"})
+    std::remove(temp_path(std::string("out.") + ext).c_str());
+}
+
+} // namespace
