@@ -279,8 +279,9 @@ AFM_TEST_CASE(test_io_read_rejects_malformed_input)
      "has 3 values, expected 4 or 5"},
     {"garbage after regions", tri_vertices + tri_segments + "0\n0\nend\n", 11,
      "unexpected content after the last section"},
-    {"binary garbage", std::string("\x7f" "ELF\x01\x02\x00\xff\xfe", 9), 1, "is not a number"},
-    {"NUL inside a number", std::string("3 2 0 0\n1 0 0\n2 1\0" "5 0\n", 20), 3, "is not a number"},
+    {"binary garbage", std::string("\x7f" "ELF\x01\x02\x00\xff\xfe", 9), 1, "has 1 value, expected 4"},
+    {"control bytes as a number", "\x01\x02 2 0 0\n", 1, "'\\x01\\x02' is not a number"},
+    {"NUL inside a number", std::string("3 2 0 0\n1 0 0\n2 1\0" "5 0\n", 22), 3, "'1\\x005' is not a number"},
   };
 
   for(const Bad_case& c : cases) {

@@ -1,3 +1,12 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
 // Self-tests of afm_validity_checker.h on hand-made meshes: a checker that
 // accepts everything would make every mesher test meaningless, so each defect
 // it is meant to catch is planted once and must be reported with its kind.
@@ -181,8 +190,7 @@ AFM_TEST_CASE(test_checker_split_segment_rejected)
   const Report r = afm_check::check_mesh(unit_square(), m);
   AFM_CHECK(!r.ok);
   AFM_CHECK_MSG(r.count(kind::missing_segment) == 1, explain(r));
-  AFM_CHECK_MSG(has_message(r, "split by mesh vertex 4"),
-                explain(r));
+  AFM_CHECK_MSG(has_message(r, "split by mesh vertex 4"), explain(r));
   // The covered area is right: only the segment rule catches this.
   AFM_CHECK_MSG(r.count(kind::area) == 0, explain(r));
 }

@@ -1,3 +1,12 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
 // Independent validity checker for 2D constrained Delaunay meshes.
 //
 // It deliberately shares no code with the mesher under test: it only uses the
@@ -24,14 +33,14 @@
 #ifndef AFM_VALIDITY_CHECKER_H
 #define AFM_VALIDITY_CHECKER_H
 
+#include <CGAL/Arr_batched_point_location.h>
+#include <CGAL/Arr_extended_dcel.h>
+#include <CGAL/Arr_point_location_result.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
-#include <CGAL/Arr_segment_traits_2.h>
-#include <CGAL/Arr_extended_dcel.h>
-#include <CGAL/Arrangement_2.h>
-#include <CGAL/Arr_batched_point_location.h>
-#include <CGAL/Arr_point_location_result.h>
 
 #include <algorithm>
 #include <array>
@@ -52,44 +61,51 @@ namespace afm_check {
 
 struct Pslg
 {
-  std::vector<std::array<double, 2> > points;
-  std::vector<std::array<std::size_t, 2> > segments; // 0-based into points
-  std::vector<std::array<double, 2> > holes;         // hole seeds
+  std::vector<std::array<double, 2>> points;
+  std::vector<std::array<std::size_t, 2>> segments; // 0-based into points
+  std::vector<std::array<double, 2>> holes;         // hole seeds
 };
 
 struct Mesh
 {
-  std::vector<std::array<double, 2> > vertices;
-  std::vector<std::array<std::size_t, 3> > triangles; // 0-based, CCW
+  std::vector<std::array<double, 2>> vertices;
+  std::vector<std::array<std::size_t, 3>> triangles; // 0-based, CCW
 };
 
 // Error kinds: every message starts with "<kind>: " and Report::count(kind)
-// counts all of them, including those beyond the stored messages.
+// counts all of them, including those beyond the stored messages, so tests
+// can assert on the kind of a failure rather than on its wording.
 namespace error_kind {
-inline constexpr const char* input = "input";                   // invalid PSLG
-inline constexpr const char* bad_coordinate = "bad-coordinate"; // NaN/inf
-inline constexpr const char* index = "index";                   // out of range
+// The PSLG itself is unusable (crossing segments, bad indices, NaN, a hole
+// seed on a segment...); the domain checks are then skipped.
+inline constexpr const char* input = "input";
+// Check 1: NaN/inf coordinates, out-of-range indices, coincident vertices,
+// triangles repeating a vertex, vertices no triangle uses.
+inline constexpr const char* bad_coordinate = "bad-coordinate";
+inline constexpr const char* index = "index";
 inline constexpr const char* duplicate_vertex = "duplicate-vertex";
 inline constexpr const char* degenerate_triangle = "degenerate-triangle";
 inline constexpr const char* unused_vertex = "unused-vertex";
-inline constexpr const char* orientation = "orientation";       // check 2
-inline constexpr const char* non_manifold = "non-manifold";     // check 3
-inline constexpr const char* missing_input_point = "missing-input-point"; // 4
-inline constexpr const char* missing_segment = "missing-segment"; // check 5
-inline constexpr const char* boundary_edge = "boundary-edge";     // check 6
-inline constexpr const char* non_delaunay = "non-delaunay";       // check 7
-inline constexpr const char* outside_domain = "outside-domain";   // check 8
+inline constexpr const char* orientation = "orientation";                 // check 2
+inline constexpr const char* non_manifold = "non-manifold";               // check 3
+inline constexpr const char* missing_input_point = "missing-input-point"; // check 4
+inline constexpr const char* missing_segment = "missing-segment";         // check 5
+inline constexpr const char* boundary_edge = "boundary-edge";             // check 6
+inline constexpr const char* non_delaunay = "non-delaunay";               // check 7
+inline constexpr const char* outside_domain = "outside-domain";           // check 8
+inline constexpr const char* area = "area";                               // check 9
+// Mesh triangles on the wrong side(s) of an input segment; see the argument
+// at the top of this file.
 inline constexpr const char* coverage = "coverage";
-inline constexpr const char* area = "area";                       // check 9
 } // namespace error_kind
 
 struct Report
 {
   bool ok = true;
-  std::vector<std::string> errors; // the first max_stored_errors messages
+  std::vector<std::string> errors;                 // the first max_stored_errors messages
   std::map<std::string, std::size_t> error_counts; // all errors, by kind
   std::size_t n_vertices = 0, n_triangles = 0;
-  std::size_t n_components = 0;         // triangles connected across non-segments
+  std::size_t n_components = 0; // triangles connected across non-segments
   std::size_t n_non_delaunay_edges = 0;
   double min_radius_ratio = 0, mean_radius_ratio = 0; // 2r/R, 1 = equilateral
   double min_angle_deg = 0, max_angle_deg = 0;
@@ -132,8 +148,8 @@ struct Report
       os << "): ";
     }
     os << n_vertices << " vertices, " << n_triangles << " triangles, "
-       << "radius ratio min " << min_radius_ratio << " mean " << mean_radius_ratio
-       << ", angles " << min_angle_deg << ".." << max_angle_deg << " deg";
+       << "radius ratio min " << min_radius_ratio << " mean " << mean_radius_ratio << ", angles "
+       << min_angle_deg << ".." << max_angle_deg << " deg";
     if(!errors.empty()) os << "; first: " << errors.front();
     return os.str();
   }
@@ -161,7 +177,10 @@ inline std::string fmt(double x)
   return buf;
 }
 
-inline std::string fmt(const Point2& p) { return "(" + fmt(p[0]) + ", " + fmt(p[1]) + ")"; }
+inline std::string fmt(const Point2& p)
+{
+  return "(" + fmt(p[0]) + ", " + fmt(p[1]) + ")";
+}
 
 inline std::uint64_t mix64(std::uint64_t z)
 {
@@ -242,8 +261,9 @@ class Checker
 {
 public:
   Checker(const Pslg& input, const Mesh& mesh, Report& report)
-    : in_(input), mesh_(mesh), rep_(report)
-  {}
+      : in_(input), mesh_(mesh), rep_(report)
+  {
+  }
 
   void run()
   {
@@ -276,7 +296,7 @@ private:
   std::vector<std::size_t> first_input_of_canon_; // for messages
   std::vector<bool> canon_is_endpoint_;
   std::unordered_map<Coord_key, std::size_t, Coord_hash> canon_by_coord_;
-  std::vector<std::array<std::size_t, 2> > segments_; // canonical, distinct
+  std::vector<std::array<std::size_t, 2>> segments_; // canonical, distinct
   std::unordered_map<Pair_key, std::size_t, Pair_hash> segment_by_pair_;
 
   std::vector<Epick::Point_2> vpoints_;
@@ -285,8 +305,8 @@ private:
   std::vector<std::size_t> vertex_of_canon_; // mesh vertex or none
   std::vector<bool> vertex_used_;
 
-  std::vector<bool> tri_valid_;   // indices in range and distinct
-  std::vector<int> tri_orient_;   // +1 CCW, 0 flat, -1 CW
+  std::vector<bool> tri_valid_; // indices in range and distinct
+  std::vector<int> tri_orient_; // +1 CCW, 0 flat, -1 CW
   std::vector<Edge> edges_;
   std::unordered_map<Pair_key, std::size_t, Pair_hash> edge_by_pair_;
 
@@ -294,14 +314,24 @@ private:
   std::vector<Arrangement::Vertex_const_handle> arr_vertex_of_canon_;
   std::vector<bool> canon_in_closure_;
 
-  std::vector<std::size_t> component_of_tri_;
-  std::vector<std::size_t> component_rep_;  // a triangle of each component
+  std::vector<std::size_t> component_rep_; // a triangle of each component
   std::vector<std::size_t> component_size_;
 
-  // Query results of the batched point location, keyed by exact point.
-  std::map<Epeck::Point_2, Location, Less_xy> located_;
+  // Query results of the batched point location. Most queries are input
+  // points, exactly doubles, and a hash on their bits avoids the exact
+  // comparisons a std::map would need; centroids go to the map.
+  std::unordered_map<Coord_key, Location, Coord_hash> located_double_;
+  std::map<Epeck::Point_2, Location, Less_xy> located_other_;
   std::vector<Epeck::Point_2> seed_points_, free_points_, centroid_points_;
   std::vector<std::size_t> free_canon_;
+
+  // Formats the message only if the report will store it: a badly broken
+  // mesh can have an error per edge.
+  template <class Make_message>
+  void fail(const char* kind, Make_message&& make_message)
+  {
+    rep_.add_error(kind, rep_.stores_next_error() ? make_message() : std::string());
+  }
 
   static bool finite(const Point2& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
 
@@ -330,8 +360,7 @@ private:
 
   std::string describe_input_point(std::size_t c) const
   {
-    return "input point " + std::to_string(first_input_of_canon_[c]) + " "
-           + fmt(canon_points_[c]);
+    return "input point " + std::to_string(first_input_of_canon_[c]) + " " + fmt(canon_points_[c]);
   }
 
   std::string describe_segment(std::size_t ca, std::size_t cb) const
@@ -350,8 +379,8 @@ private:
     for(std::size_t i = 0; i < in_.points.size(); ++i) {
       const Point2& p = in_.points[i];
       if(!finite(p)) {
-        rep_.add_error(error_kind::input, "input point " + std::to_string(i) + " " + fmt(p)
-                                            + " is not finite");
+        fail(error_kind::input,
+             [&] { return "input point " + std::to_string(i) + " " + fmt(p) + " is not finite"; });
         ok = false;
         continue;
       }
@@ -367,17 +396,22 @@ private:
     for(std::size_t s = 0; s < in_.segments.size(); ++s) {
       const auto& seg = in_.segments[s];
       if(seg[0] >= in_.points.size() || seg[1] >= in_.points.size()) {
-        rep_.add_error(error_kind::input, "input segment " + std::to_string(s)
-                                            + " has an out-of-range point index");
+        fail(error_kind::input, [&] {
+          return "input segment " + std::to_string(s) + " has an out-of-range point index";
+        });
         ok = false;
         continue;
       }
       const std::size_t a = canon_of_input[seg[0]], b = canon_of_input[seg[1]];
-      if(a == none || b == none) { ok = false; continue; } // already reported
+      if(a == none || b == none) { // a non-finite end, already reported
+        ok = false;
+        continue;
+      }
       if(a == b) {
-        rep_.add_error(error_kind::input, "input segment " + std::to_string(s)
-                                            + " is degenerate (both ends at "
-                                            + fmt(canon_points_[a]) + ")");
+        fail(error_kind::input, [&] {
+          return "input segment " + std::to_string(s) + " is degenerate (both ends at "
+                 + fmt(canon_points_[a]) + ")";
+        });
         ok = false;
         continue;
       }
@@ -389,8 +423,9 @@ private:
 
     for(std::size_t h = 0; h < in_.holes.size(); ++h) {
       if(!finite(in_.holes[h])) {
-        rep_.add_error(error_kind::input, "hole seed " + std::to_string(h) + " "
-                                            + fmt(in_.holes[h]) + " is not finite");
+        fail(error_kind::input, [&] {
+          return "hole seed " + std::to_string(h) + " " + fmt(in_.holes[h]) + " is not finite";
+        });
         ok = false;
       }
     }
@@ -412,7 +447,7 @@ private:
     bool all_finite = true;
     for(std::size_t v = 0; v < n; ++v) {
       if(!finite(vcoord(v))) {
-        rep_.add_error(error_kind::bad_coordinate, describe_vertex(v) + " is not finite");
+        fail(error_kind::bad_coordinate, [&] { return describe_vertex(v) + " is not finite"; });
         all_finite = false;
       }
     }
@@ -429,9 +464,10 @@ private:
       const Coord_key key = coord_key(p);
       auto ins = mesh_by_coord_.emplace(key, v);
       if(!ins.second) {
-        rep_.add_error(error_kind::duplicate_vertex,
-                       describe_vertex(v) + " has the same coordinates as vertex "
-                         + std::to_string(ins.first->second));
+        fail(error_kind::duplicate_vertex, [&] {
+          return describe_vertex(v) + " has the same coordinates as vertex "
+                 + std::to_string(ins.first->second);
+        });
         continue;
       }
       auto it = canon_by_coord_.find(key);
@@ -451,25 +487,25 @@ private:
     for(std::size_t t = 0; t < nt; ++t) {
       const auto& tr = mesh_.triangles[t];
       if(tr[0] >= nv || tr[1] >= nv || tr[2] >= nv) {
-        rep_.add_error(error_kind::index, describe_triangle(t) + " has a vertex index >= "
-                                            + std::to_string(nv));
+        fail(error_kind::index,
+             [&] { return describe_triangle(t) + " has a vertex index >= " + std::to_string(nv); });
         continue;
       }
       if(tr[0] == tr[1] || tr[1] == tr[2] || tr[0] == tr[2]) {
-        rep_.add_error(error_kind::degenerate_triangle,
-                       "triangle " + std::to_string(t) + " [" + std::to_string(tr[0]) + ","
-                         + std::to_string(tr[1]) + "," + std::to_string(tr[2])
-                         + "] repeats a vertex");
+        fail(error_kind::degenerate_triangle, [&] {
+          return "triangle " + std::to_string(t) + " [" + std::to_string(tr[0]) + ","
+                 + std::to_string(tr[1]) + "," + std::to_string(tr[2]) + "] repeats a vertex";
+        });
         continue;
       }
       tri_valid_[t] = true;
       const CGAL::Orientation o =
-        CGAL::orientation(vpoints_[tr[0]], vpoints_[tr[1]], vpoints_[tr[2]]);
+          CGAL::orientation(vpoints_[tr[0]], vpoints_[tr[1]], vpoints_[tr[2]]);
       tri_orient_[t] = (o == CGAL::LEFT_TURN) ? 1 : (o == CGAL::RIGHT_TURN ? -1 : 0);
       if(o == CGAL::RIGHT_TURN)
-        rep_.add_error(error_kind::orientation, describe_triangle(t) + " is clockwise");
+        fail(error_kind::orientation, [&] { return describe_triangle(t) + " is clockwise"; });
       else if(o == CGAL::COLLINEAR)
-        rep_.add_error(error_kind::orientation, describe_triangle(t) + " has zero area");
+        fail(error_kind::orientation, [&] { return describe_triangle(t) + " has zero area"; });
     }
   }
 
@@ -503,15 +539,16 @@ private:
     for(Edge& e : edges_) {
       e.is_segment = is_segment(e.a, e.b);
       if(e.uses > 2) {
-        rep_.add_error(error_kind::non_manifold,
-                       describe_edge(e) + " is used by " + std::to_string(e.uses)
-                         + " triangles (e.g. " + std::to_string(e.tri[0]) + " and "
-                         + std::to_string(e.tri[1]) + ")");
+        fail(error_kind::non_manifold, [&] {
+          return describe_edge(e) + " is used by " + std::to_string(e.uses) + " triangles (e.g. "
+                 + std::to_string(e.tri[0]) + " and " + std::to_string(e.tri[1]) + ")";
+        });
       } else if(e.uses == 2 && e.net != 0) {
-        rep_.add_error(error_kind::non_manifold,
-                       describe_edge(e) + " is used by triangles " + std::to_string(e.tri[0])
-                         + " and " + std::to_string(e.tri[1])
-                         + " in the same direction (overlap or flipped triangle)");
+        fail(error_kind::non_manifold, [&] {
+          return describe_edge(e) + " is used by triangles " + std::to_string(e.tri[0]) + " and "
+                 + std::to_string(e.tri[1])
+                 + " in the same direction (overlap or flipped triangle)";
+        });
       }
     }
   }
@@ -530,7 +567,8 @@ private:
         for(std::size_t v : mesh_.triangles[t]) vertex_used_[v] = true;
     for(std::size_t v = 0; v < vertex_used_.size(); ++v)
       if(!vertex_used_[v])
-        rep_.add_error(error_kind::unused_vertex, describe_vertex(v) + " is used by no triangle");
+        fail(error_kind::unused_vertex,
+             [&] { return describe_vertex(v) + " is used by no triangle"; });
   }
 
   void compute_quality()
@@ -549,8 +587,8 @@ private:
         const Point2& b = *p[(k + 2) % 3];
         len[k] = std::hypot(b[0] - a[0], b[1] - a[1]);
       }
-      const double cross2 = (p[1]->at(0) - p[0]->at(0)) * (p[2]->at(1) - p[0]->at(1))
-                            - (p[1]->at(1) - p[0]->at(1)) * (p[2]->at(0) - p[0]->at(0));
+      const Point2 &p0 = *p[0], &p1 = *p[1], &p2 = *p[2];
+      const double cross2 = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
       const double area = 0.5 * std::fabs(cross2);
       const double s = 0.5 * (len[0] + len[1] + len[2]);
       const double prod = len[0] * len[1] * len[2];
@@ -565,7 +603,7 @@ private:
         const double ux = a[0] - o[0], uy = a[1] - o[1], vx = b[0] - o[0], vy = b[1] - o[1];
         // atan2 stays accurate for needle angles where acos would not.
         const double angle =
-          std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * rad_to_deg;
+            std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * rad_to_deg;
         min_angle = std::min(min_angle, angle);
         max_angle = std::max(max_angle, angle);
       }
@@ -583,9 +621,10 @@ private:
   {
     for(const Edge& e : edges_)
       if(e.uses == 1 && !e.is_segment)
-        rep_.add_error(error_kind::boundary_edge,
-                       describe_edge(e) + " of triangle " + std::to_string(e.tri[0])
-                         + " is on the mesh boundary but is not an input segment");
+        fail(error_kind::boundary_edge, [&] {
+          return describe_edge(e) + " of triangle " + std::to_string(e.tri[0])
+                 + " is on the mesh boundary but is not an input segment";
+        });
   }
 
   void check_delaunay()
@@ -602,10 +641,11 @@ private:
                                        vpoints_[d])
          == CGAL::ON_POSITIVE_SIDE) {
         ++rep_.n_non_delaunay_edges;
-        rep_.add_error(error_kind::non_delaunay,
-                       describe_edge(e) + " is not locally Delaunay: " + describe_vertex(d)
-                         + " of triangle " + std::to_string(t1)
-                         + " is strictly inside the circumcircle of " + describe_triangle(t0));
+        fail(error_kind::non_delaunay, [&] {
+          return describe_edge(e) + " is not locally Delaunay: " + describe_vertex(d)
+                 + " of triangle " + std::to_string(t1) + " is strictly inside the circumcircle of "
+                 + describe_triangle(t0);
+        });
       }
     }
   }
@@ -631,8 +671,9 @@ private:
       if(p.x() == Epeck::FT(approx[0]) && p.y() == Epeck::FT(approx[1]))
         it = canon_by_coord_.find(coord_key(approx));
       if(it == canon_by_coord_.end()) {
-        rep_.add_error(error_kind::input, "input segments cross at ~" + fmt(approx)
-                                            + ", which is not an input point");
+        fail(error_kind::input, [&] {
+          return "input segments cross at ~" + fmt(approx) + ", which is not an input point";
+        });
         v->set_data(none);
         ok = false;
         continue;
@@ -644,18 +685,20 @@ private:
       const std::size_t a = e->source()->data(), b = e->target()->data();
       if(a == none || b == none) continue;
       if(segment_by_pair_.count(pair_key(a, b)) == 0) {
-        rep_.add_error(error_kind::input,
-                       "input segments overlap or an input point lies inside a segment: "
-                       "arrangement edge "
-                         + fmt(canon_points_[a]) + "-" + fmt(canon_points_[b])
-                         + " is only part of an input segment");
+        fail(error_kind::input, [&] {
+          return "input segments overlap or an input point lies inside a segment: "
+                 "arrangement edge "
+                 + fmt(canon_points_[a]) + "-" + fmt(canon_points_[b])
+                 + " is only part of an input segment";
+        });
         ok = false;
       }
     }
     if(ok && arr_.number_of_edges() != segments_.size()) {
-      rep_.add_error(error_kind::input, "the arrangement has " + std::to_string(arr_.number_of_edges())
-                                          + " edges for " + std::to_string(segments_.size())
-                                          + " distinct input segments");
+      fail(error_kind::input, [&] {
+        return "the arrangement has " + std::to_string(arr_.number_of_edges()) + " edges for "
+               + std::to_string(segments_.size()) + " distinct input segments";
+      });
       ok = false;
     }
     for(auto f = arr_.faces_begin(); f != arr_.faces_end(); ++f)
@@ -678,20 +721,18 @@ private:
       const std::size_t r0 = find(e.tri[0]), r1 = find(e.tri[1]);
       if(r0 != r1) parent[std::max(r0, r1)] = std::min(r0, r1);
     }
-    component_of_tri_.assign(nt, none);
     std::vector<std::size_t> component_of_root(nt, none);
     for(std::size_t t = 0; t < nt; ++t) {
       if(!tri_valid_[t]) continue;
       const std::size_t r = find(t);
       if(component_of_root[r] == none) {
         component_of_root[r] = component_rep_.size();
-        // Prefer a CCW representative: its centroid is strictly inside it.
         component_rep_.push_back(t);
         component_size_.push_back(0);
       }
       const std::size_t c = component_of_root[r];
-      component_of_tri_[t] = c;
       ++component_size_[c];
+      // Prefer a CCW representative: its centroid is strictly inside it.
       if(tri_orient_[component_rep_[c]] <= 0 && tri_orient_[t] > 0) component_rep_[c] = t;
     }
     rep_.n_components = component_rep_.size();
@@ -709,9 +750,8 @@ private:
     }
     for(std::size_t t : component_rep_) {
       const auto& tr = mesh_.triangles[t];
-      centroid_points_.push_back(CGAL::centroid(exact_point(vcoord(tr[0])),
-                                                exact_point(vcoord(tr[1])),
-                                                exact_point(vcoord(tr[2]))));
+      centroid_points_.push_back(CGAL::centroid(
+          exact_point(vcoord(tr[0])), exact_point(vcoord(tr[1])), exact_point(vcoord(tr[2]))));
     }
     std::vector<Epeck::Point_2> queries;
     queries.insert(queries.end(), seed_points_.begin(), seed_points_.end());
@@ -719,12 +759,13 @@ private:
     queries.insert(queries.end(), centroid_points_.begin(), centroid_points_.end());
     if(queries.empty()) return;
     if(arr_.number_of_edges() == 0) {
-      for(const auto& q : queries) located_.emplace(q, Location(arr_.unbounded_face()));
+      const Arrangement::Face_const_handle unbounded = arr_.unbounded_face();
+      for(const auto& q : queries) store_location(q, Location(unbounded));
     } else {
-      std::vector<std::pair<Epeck::Point_2, Location> > results;
+      std::vector<std::pair<Epeck::Point_2, Location>> results;
       results.reserve(queries.size());
       CGAL::locate(arr_, queries.begin(), queries.end(), std::back_inserter(results));
-      for(auto& r : results) located_.emplace(r.first, r.second);
+      for(auto& r : results) store_location(r.first, r.second);
     }
 
     // Seeds first: they decide which bounded faces are holes.
@@ -734,21 +775,48 @@ private:
       if(auto f = boost::get<Arrangement::Face_const_handle>(loc)) {
         if(!(*f)->is_unbounded()) arr_.non_const_handle(*f)->set_data(hole_face);
       } else {
-        rep_.add_error(error_kind::input, "hole seed " + std::to_string(h) + " "
-                                            + fmt(in_.holes[h])
-                                            + " lies on an input segment, so the face it "
-                                              "removes is ambiguous; it is ignored");
+        fail(error_kind::input, [&] {
+          return "hole seed " + std::to_string(h) + " " + fmt(in_.holes[h])
+                 + " lies on an input segment, so the face it "
+                   "removes is ambiguous; it is ignored";
+        });
       }
     }
   }
 
+  // A singleton interval approximation is the exact value, so this needs no
+  // exact arithmetic.
+  static bool as_double(const Epeck::Point_2& p, Point2& out)
+  {
+    const auto& a = p.approx();
+    if(a.x().inf() != a.x().sup() || a.y().inf() != a.y().sup()) return false;
+    out = {a.x().inf(), a.y().inf()};
+    return true;
+  }
+
+  void store_location(const Epeck::Point_2& p, const Location& loc)
+  {
+    Point2 d;
+    if(as_double(p, d))
+      located_double_.emplace(coord_key(d), loc);
+    else
+      located_other_.emplace(p, loc);
+  }
+
   const Location* find_location(const Epeck::Point_2& p)
   {
-    auto it = located_.find(p);
-    if(it != located_.end()) return &it->second;
-    rep_.add_error(error_kind::input, "internal: point location returned no answer for ~("
-                                        + fmt(CGAL::to_double(p.x())) + ", "
-                                        + fmt(CGAL::to_double(p.y())) + ")");
+    Point2 d;
+    if(as_double(p, d)) {
+      auto it = located_double_.find(coord_key(d));
+      if(it != located_double_.end()) return &it->second;
+    } else {
+      auto it = located_other_.find(p);
+      if(it != located_other_.end()) return &it->second;
+    }
+    fail(error_kind::input, [&] {
+      return "internal: point location returned no answer for ~(" + fmt(CGAL::to_double(p.x()))
+             + ", " + fmt(CGAL::to_double(p.y())) + ")";
+    });
     return nullptr;
   }
 
@@ -780,8 +848,8 @@ private:
       } else if(auto v = boost::get<Arrangement::Vertex_const_handle>(loc)) {
         canon_in_closure_[c] = touches_domain(*v);
       } else {
-        rep_.add_error(error_kind::input, describe_input_point(c)
-                                            + " is a free point inside an input segment");
+        fail(error_kind::input,
+             [&] { return describe_input_point(c) + " is a free point inside an input segment"; });
       }
     }
 
@@ -789,21 +857,24 @@ private:
       if(!canon_in_closure_[c]) continue;
       const std::size_t v = vertex_of_canon_[c];
       if(v == none)
-        rep_.add_error(error_kind::missing_input_point,
-                       describe_input_point(c) + " lies in the closed domain but is not a mesh vertex");
+        fail(error_kind::missing_input_point, [&] {
+          return describe_input_point(c) + " lies in the closed domain but is not a mesh vertex";
+        });
       else if(!vertex_used_[v])
-        rep_.add_error(error_kind::missing_input_point,
-                       describe_input_point(c) + " is mesh vertex " + std::to_string(v)
-                         + " but no triangle uses it");
+        fail(error_kind::missing_input_point, [&] {
+          return describe_input_point(c) + " is mesh vertex " + std::to_string(v)
+                 + " but no triangle uses it";
+        });
     }
     // Steiner vertices need no location: every vertex is used by a triangle
     // and, once coverage holds, every triangle lies in the closed domain.
     for(std::size_t v = 0; v < input_of_vertex_.size(); ++v) {
       const std::size_t c = input_of_vertex_[v];
       if(c != none && !canon_in_closure_[c])
-        rep_.add_error(error_kind::outside_domain, describe_vertex(v) + " is "
-                                                     + describe_input_point(c)
-                                                     + ", which lies outside the closed domain");
+        fail(error_kind::outside_domain, [&] {
+          return describe_vertex(v) + " is " + describe_input_point(c)
+                 + ", which lies outside the closed domain";
+        });
     }
   }
 
@@ -837,10 +908,10 @@ private:
       const Edge* e = (u != none && v != none) ? find_edge(u, v) : nullptr;
       if(e == nullptr) {
         if(left || right)
-          rep_.add_error(error_kind::missing_segment,
-                         describe_segment(ca, cb) + " (domain on " + side_name(left, right)
-                           + ") is not a mesh edge"
-                           + (rep_.stores_next_error() ? split_diagnostic(ca, cb) : ""));
+          fail(error_kind::missing_segment, [&] {
+            return describe_segment(ca, cb) + " (domain on " + side_name(left, right)
+                   + ") is not a mesh edge" + split_diagnostic(ca, cb);
+          });
         continue;
       }
       if(e->uses > 2 || (e->uses == 2 && e->net != 0)) continue; // non-manifold, reported
@@ -848,10 +919,11 @@ private:
       if(jump == left - right) continue;
       const int mesh_left = (e->uses == 2 || jump > 0) ? 1 : 0;
       const int mesh_right = (e->uses == 2 || jump < 0) ? 1 : 0;
-      rep_.add_error(error_kind::coverage,
-                     describe_segment(ca, cb) + ": the domain is on " + side_name(left, right)
-                       + " but mesh triangles are on " + side_name(mesh_left, mesh_right)
-                       + " (mesh triangle " + std::to_string(e->tri[0]) + ")");
+      fail(error_kind::coverage, [&] {
+        return describe_segment(ca, cb) + ": the domain is on " + side_name(left, right)
+               + " but mesh triangles are on " + side_name(mesh_left, mesh_right)
+               + " (mesh triangle " + std::to_string(e->tri[0]) + ")";
+      });
     }
   }
 
@@ -860,18 +932,22 @@ private:
     for(std::size_t c = 0; c < component_rep_.size(); ++c) {
       const Location* loc = find_location(centroid_points_[c]);
       if(loc == nullptr) continue;
-      const std::string what = "component of " + std::to_string(component_size_[c])
-                               + " triangles containing " + describe_triangle(component_rep_[c]);
+      auto what = [&] {
+        return "component of " + std::to_string(component_size_[c]) + " triangles containing "
+               + describe_triangle(component_rep_[c]);
+      };
       if(auto f = boost::get<Arrangement::Face_const_handle>(loc)) {
         if((*f)->data() == hole_face)
-          rep_.add_error(error_kind::outside_domain, what + " lies in a hole");
+          fail(error_kind::outside_domain, [&] { return what() + " lies in a hole"; });
         else if((*f)->data() == unbounded_face)
-          rep_.add_error(error_kind::outside_domain,
-                         what + " lies outside the outer boundary (unbounded face)");
+          fail(error_kind::outside_domain,
+               [&] { return what() + " lies outside the outer boundary (unbounded face)"; });
       } else {
-        rep_.add_error(error_kind::outside_domain,
-                       what + ": the centroid of that triangle lies on an input segment, "
-                              "so the triangle crosses a segment");
+        fail(error_kind::outside_domain, [&] {
+          return what()
+                 + ": the centroid of that triangle lies on an input segment, "
+                   "so the triangle crosses a segment";
+        });
       }
     }
   }
@@ -901,10 +977,11 @@ private:
     rep_.mesh_area = CGAL::to_double(mesh_area);
     rep_.domain_area = CGAL::to_double(domain_area);
     if(mesh_area != domain_area) {
-      rep_.add_error(error_kind::area,
-                     "triangle areas sum to " + fmt(rep_.mesh_area) + " but the domain area is "
-                       + fmt(rep_.domain_area) + " (exact difference ~"
-                       + fmt(CGAL::to_double(mesh_area - domain_area)) + ")");
+      fail(error_kind::area, [&] {
+        return "triangle areas sum to " + fmt(rep_.mesh_area) + " but the domain area is "
+               + fmt(rep_.domain_area) + " (exact difference ~"
+               + fmt(CGAL::to_double(mesh_area - domain_area)) + ")";
+      });
     }
   }
 };

@@ -251,23 +251,28 @@ public:
 
   void move_to(const std::array<double, 2>& p)
   {
-    open();
-    maybe_break();
+    // A new element every so often: libxml2, behind many SVG tools, refuses
+    // attribute values over 10 MB, and each subpath starts with an absolute
+    // move, so the split changes nothing in the picture.
+    if(opened_ && element_length_ > max_element_length)
+      finish();
     long long gx, gy;
     to_grid(p, gx, gy);
-    put_command('M');
-    put_number(gx);
-    put_number(gy);
-    x_ = gx;
-    y_ = gy;
+    put_move(gx, gy);
     start_x_ = gx;
     start_y_ = gy;
   }
 
-  void line_to(const std::array<double, 2>& p)
+  // Only for open polylines: a closed one must stay in one subpath for 'z'.
+  void line_to(const std::array<double, 2>& p, bool may_split = true)
   {
     long long gx, gy;
     to_grid(p, gx, gy);
+    // One polyline can be long enough to need splitting by itself.
+    if(may_split && element_length_ > 2 * max_element_length) {
+      finish();
+      put_move(x_, y_);
+    }
     maybe_break();
     if(last_command_ != 'l')
       put_command('l');
@@ -294,9 +299,23 @@ public:
     os_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
     buf_.clear();
     opened_ = false;
+    element_length_ = 0;
   }
 
 private:
+  static constexpr std::size_t max_element_length = std::size_t(1) << 20;
+
+  void put_move(long long gx, long long gy)
+  {
+    open();
+    maybe_break();
+    put_command('M');
+    put_number(gx);
+    put_number(gy);
+    x_ = gx;
+    y_ = gy;
+  }
+
   void open()
   {
     if(opened_)
@@ -329,6 +348,7 @@ private:
   {
     buf_ += c;
     ++line_length_;
+    ++element_length_;
     last_command_ = c;
     need_separator_ = false;
   }
@@ -373,6 +393,7 @@ private:
     }
     buf_.append(tmp, static_cast<std::size_t>(n));
     line_length_ += static_cast<std::size_t>(n);
+    element_length_ += static_cast<std::size_t>(n);
     need_separator_ = true;
   }
 
@@ -395,6 +416,7 @@ private:
   bool need_separator_ = false;
   char last_command_ = 0;
   std::size_t line_length_ = 0;
+  std::size_t element_length_ = 0;
   long long x_ = 0, y_ = 0, start_x_ = 0, start_y_ = 0;
 };
 
@@ -527,7 +549,7 @@ inline void svg_fill_domain(const std::vector<std::array<double, 2> >& pts,
       continue;
     out.move_to(loop[0]);
     for(std::size_t i = 1; i < loop.size(); ++i)
-      out.line_to(loop[i]);
+      out.line_to(loop[i], false);
     out.close();
   }
 }
@@ -743,7 +765,8 @@ mesh, and the view box fits the in-domain vertices, or the window of
 
 The output is meant to stay usable for meshes of millions of triangles: each
 edge is drawn once, the edges are chained into polylines inside one `<path>`
-per layer, the fill is drawn from the domain boundary only, and coordinates
+per layer (split every megabyte, the most many XML parsers accept being 10 MB
+per attribute), the fill is drawn from the domain boundary only, and coordinates
 are rounded on a grid of about six significant digits of the picture size,
 far below what can be seen. With a window, edges wholly outside it are
 skipped and those reaching far outside are clipped, so that a deep zoom
@@ -908,9 +931,9 @@ void write_SVG(std::ostream& os, const CDT& cdt,
 Writes the in-domain triangles of `cdt` to `file_name`, in the format given
 by its extension (case-insensitive):
 - `.off`: `write_OFF()`;
-- `.vtu`: `CGAL::IO::write_VTU()` in binary mode. This writer is CGAL's: it
-  lists all vertices of the triangulation, not only those of the domain, and
-  adds the constrained edges as line cells;
+- `.vtu`: `CGAL::IO::write_VTU()` in ASCII mode with `max_digits10` digits.
+  This writer is CGAL's: it lists all vertices of the triangulation, not only
+  those of the domain, and adds the constrained edges as line cells;
 - `.node` or `.ele`: `write_triangle_node_ele()`, which writes both files;
 - `.msh`: `write_gmsh_msh()`;
 - `.svg`: `write_SVG()` with default options.
@@ -933,7 +956,13 @@ void write_mesh(const std::string& file_name, const CDT& cdt)
     internal::mesh_write_file(file_name, [&](std::ostream& os) { write_OFF(os, cdt); });
   } else if(ext == "vtu") {
     internal::mesh_write_file(file_name, [&](std::ostream& os) {
-      CGAL::IO::write_VTU(os, cdt, CGAL::IO::BINARY);
+      // ASCII, because CGAL 5.5's binary mode leaves out the closing
+      // </AppendedData> tag, so that XML parsers (meshio, for one) reject the
+      // file, and dumps the bytes of the kernel's FT as if they were doubles,
+      // which is garbage for any kernel but Epick.
+      boost::io::ios_all_saver saver(os);
+      internal::mesh_set_exact_format(os);
+      CGAL::IO::write_VTU(os, cdt, CGAL::IO::ASCII);
     });
   } else if(ext == "node" || ext == "ele") {
     write_triangle_node_ele(file_name.substr(0, file_name.size() - ext.size() - 1), cdt);

@@ -1,0 +1,277 @@
+// afmesh_2: the command-line front end of Advancing_front_mesh_2.
+//
+//   afmesh_2 INPUT.poly --size H -o OUT.off [-o OUT.vtu] [-o OUT.svg]
+//            [--kernel epick|epeck|exact-rational] [--stats]
+//
+// Exit codes: 0 success; 1 invalid input (one line "afmesh_2: error:
+// FILE[:LINE]: what is wrong" on stderr); 2 bad usage; 3 internal error.
+
+#include <CGAL/Advancing_front_mesher_2.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
+#include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <boost/program_options.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <list>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace po = boost::program_options;
+namespace AFM = CGAL::Advancing_front_mesh_2;
+
+namespace {
+
+const char* const program = "afmesh_2";
+
+struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+struct Input_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+struct Options
+{
+  std::string input;
+  double size = 0;
+  std::vector<std::string> outputs;
+  std::string kernel = "epick";
+  bool stats = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// A progress bar on stderr, only when stderr is a terminal, redrawn at most
+// ten times a second.
+struct Progress_visitor : AFM::Default_visitor
+{
+  bool enabled = false;
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  void on_progress(double fraction)
+  {
+    if(!enabled || seconds_since(last) < 0.1) return;
+    last = std::chrono::steady_clock::now();
+    const int width = 40, filled = int(fraction * width);
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] "
+              << std::fixed << std::setprecision(1) << 100 * fraction << "%" << std::flush;
+  }
+  void done()
+  {
+    if(enabled) std::cerr << "\r" << std::string(50, ' ') << "\r" << std::flush;
+  }
+};
+
+template <class K>
+struct Types
+{
+  typedef CGAL::Triangulation_vertex_base_2<K> Vb;
+  typedef CGAL::Delaunay_mesh_face_base_2<K> Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+  // legal input has no crossing segments: refuse them instead of splitting
+  typedef CGAL::Constrained_Delaunay_triangulation_2<
+    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag> CDT;
+};
+
+void json_number(std::ostream& os, const char* name, double v, bool comma = true)
+{
+  os << "\"" << name << "\": ";
+  if(std::isfinite(v)) os << v; else os << "null";
+  if(comma) os << ", ";
+}
+
+template <class K>
+int run(const Options& opt)
+{
+  typedef typename Types<K>::CDT CDT;
+  typedef typename K::Point_2 Point;
+  const auto t_start = std::chrono::steady_clock::now();
+
+  AFM::IO::Poly_data in;
+  try {
+    in = AFM::IO::read_poly(opt.input);
+  } catch(const AFM::IO::Poly_read_error& e) {
+    throw Input_error(e.what());
+  }
+  const double t_read = seconds_since(t_start);
+
+  // The boundary: points, then segments, one by one so that a problem can
+  // be named by its segment.
+  const auto t_cdt = std::chrono::steady_clock::now();
+  CDT cdt;
+  std::vector<typename CDT::Vertex_handle> vh;
+  vh.reserve(in.points.size());
+  for(const auto& p : in.points) vh.push_back(cdt.insert(Point(p[0], p[1])));
+  for(std::size_t i = 0; i < in.segments.size(); ++i) {
+    const auto& s = in.segments[i];
+    if(vh[s[0]] == vh[s[1]]) {
+      std::ostringstream os;
+      os << opt.input << ": segment " << i + 1 << " has zero length (its vertices " << s[0] + 1 << " and "
+         << s[1] + 1 << " coincide)";
+      throw Input_error(os.str());
+    }
+    try {
+      cdt.insert_constraint(vh[s[0]], vh[s[1]]);
+    } catch(const typename CDT::Intersection_of_constraints_exception&) {
+      std::ostringstream os;
+      os << opt.input << ": segment " << i + 1 << " (vertices " << s[0] + 1 << " and " << s[1] + 1
+         << ") crosses another segment";
+      throw Input_error(os.str());
+    }
+  }
+  std::list<Point> seeds;
+  for(const auto& h : in.holes) seeds.push_back(Point(h[0], h[1]));
+  const double t_boundary = seconds_since(t_cdt);
+
+  Progress_visitor progress;
+  progress.enabled = isatty(2) != 0;
+  CGAL::Advancing_front_mesher_2<CDT, AFM::Uniform_sizing_field_2<K>, Progress_visitor> mesher(
+    cdt, AFM::Uniform_sizing_field_2<K>(typename K::FT(opt.size)), progress);
+  mesher.set_seeds(seeds.begin(), seeds.end());
+  const auto t_mesh = std::chrono::steady_clock::now();
+  mesher.refine_mesh();
+  mesher.visitor().done();
+  const double t_meshing = seconds_since(t_mesh);
+  const AFM::Statistics& st = mesher.statistics();
+  if(st.number_of_faces == 0) {
+    throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
+  }
+
+  const auto t_write = std::chrono::steady_clock::now();
+  for(const std::string& out : opt.outputs) {
+    try {
+      AFM::IO::write_mesh(out, cdt);
+    } catch(const std::exception& e) {
+      std::cerr << program << ": error: " << out << ": " << e.what() << "\n";
+      return 3;
+    }
+  }
+  const double t_writing = seconds_since(t_write);
+
+  if(opt.stats) {
+    const AFM::Mesh_quality q = AFM::mesh_quality(cdt);
+    std::ostringstream os;
+    os.precision(6);
+    os << "{\"input\": \"" << opt.input << "\", \"kernel\": \"" << opt.kernel << "\", ";
+    json_number(os, "size", opt.size);
+    os << "\"vertices\": " << st.number_of_vertices << ", \"triangles\": " << st.number_of_faces << ", ";
+    os << "\"time\": {";
+    json_number(os, "read", t_read);
+    json_number(os, "boundary", t_boundary);
+    json_number(os, "mesh", t_meshing);
+    json_number(os, "write", t_writing);
+    json_number(os, "total", seconds_since(t_start), false);
+    os << "}, \"triangles_per_second\": " << (t_meshing > 0 ? st.number_of_faces / t_meshing : 0) << ", ";
+    os << "\"statistics\": {"
+       << "\"front_edges_processed\": " << st.front_edges_processed
+       << ", \"points_inserted\": " << st.points_inserted
+       << ", \"triangles_closed_on_existing_points\": " << st.triangles_closed_on_existing_points
+       << ", \"forced_closures\": " << st.forced_closures
+       << ", \"rejected_points\": " << st.rejected_points
+       << ", \"triangles_around_new_points\": " << st.triangles_around_new_points
+       << ", \"triangles_removed\": " << st.triangles_removed
+       << ", \"size_bound_raised\": " << st.size_bound_raised
+       << ", \"triangle_octree_queries\": " << st.triangle_octree_queries
+       << ", \"edge_octree_queries\": " << st.edge_octree_queries
+       << ", \"point_search_queries\": " << st.point_search_queries
+       << ", \"point_search_rebuilds\": " << st.point_search_rebuilds
+       << ", \"incircle_tests\": " << st.incircle_tests
+       << ", \"largest_front\": " << st.largest_front
+       << ", \"largest_live_triangles\": " << st.largest_live_triangles
+       << ", \"delaunay_repair_flips\": " << st.delaunay_repair_flips << "}, ";
+    os << "\"quality\": {";
+    json_number(os, "min_radius_ratio", q.min_radius_ratio);
+    json_number(os, "mean_radius_ratio", q.mean_radius_ratio);
+    json_number(os, "share_radius_ratio_above_0_9", q.share_above_0_9);
+    json_number(os, "min_angle_degrees", q.min_angle_degrees);
+    json_number(os, "max_angle_degrees", q.max_angle_degrees, false);
+    os << "}}";
+    std::cout << os.str() << std::endl;
+  }
+  return 0;
+}
+
+Options parse(int argc, char* argv[])
+{
+  Options opt;
+  po::options_description visible("Usage: afmesh_2 INPUT.poly --size H -o OUT [-o OUT ...] [options]\n\n"
+                                  "Meshes the domain of a Triangle .poly file with the advancing-front\n"
+                                  "Delaunay algorithm of Mavriplis (1992).\n\nOptions");
+  visible.add_options()
+    ("help,h", "print this help and exit")
+    ("size", po::value<double>(&opt.size), "target edge length H (uniform)")
+    ("output,o", po::value<std::vector<std::string> >(&opt.outputs),
+     "output file, format chosen by extension: .off .vtu .node/.ele .msh .svg (repeatable)")
+    ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
+     "CGAL kernel: epick (default), epeck or exact-rational")
+    ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout");
+  po::options_description hidden;
+  hidden.add_options()("input", po::value<std::string>(&opt.input));
+  po::options_description all;
+  all.add(visible).add(hidden);
+  po::positional_options_description pos;
+  pos.add("input", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(pos).run(), vm);
+    po::notify(vm);
+  } catch(const po::error& e) {
+    throw Usage_error(e.what());
+  }
+  if(vm.count("help")) {
+    std::cout << visible << "\nExit codes: 0 success, 1 invalid input, 2 bad usage, 3 internal error.\n";
+    std::exit(EXIT_SUCCESS);
+  }
+  if(opt.input.empty()) throw Usage_error("no input file given");
+  if(!vm.count("size")) throw Usage_error("--size H is required");
+  if(!(opt.size > 0) || !std::isfinite(opt.size)) throw Usage_error("--size must be a positive number");
+  if(opt.kernel != "epick" && opt.kernel != "epeck" && opt.kernel != "exact-rational")
+    throw Usage_error("--kernel must be epick, epeck or exact-rational, not '" + opt.kernel + "'");
+  for(const std::string& out : opt.outputs) {
+    const std::string ext = out.substr(out.find_last_of('.') == std::string::npos ? out.size()
+                                                                                 : out.find_last_of('.'));
+    if(ext != ".off" && ext != ".vtu" && ext != ".node" && ext != ".ele" && ext != ".msh" && ext != ".svg")
+      throw Usage_error("unknown output format '" + out + "' (use .off, .vtu, .node, .ele, .msh or .svg)");
+  }
+  return opt;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options opt;
+  try {
+    opt = parse(argc, argv);
+  } catch(const Usage_error& e) {
+    std::cerr << program << ": " << e.what() << "\n" << "Try 'afmesh_2 --help'.\n";
+    return 2;
+  }
+  try {
+    if(opt.kernel == "epeck") return run<CGAL::Exact_predicates_exact_constructions_kernel>(opt);
+    if(opt.kernel == "exact-rational") return run<CGAL::Simple_cartesian<CGAL::Exact_rational> >(opt);
+    return run<CGAL::Exact_predicates_inexact_constructions_kernel>(opt);
+  } catch(const Input_error& e) {
+    std::cerr << program << ": error: " << e.what() << "\n";
+    return 1;
+  } catch(const std::invalid_argument& e) {
+    std::cerr << program << ": error: " << opt.input << ": " << e.what() << "\n";
+    return 1;
+  } catch(const std::exception& e) {
+    std::cerr << program << ": internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

@@ -1,0 +1,211 @@
+// Mesher tests with the default kernel (Exact_predicates_inexact_constructions_kernel):
+// the geometries of the issue, determinism, class API against the free function.
+#include "afm_test_mesh.h"
+#include "afm_geometries.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef afm_test::Types<K>::CDT CDT;
+typedef K::Point_2 Point;
+using afm_test::mesh_and_check;
+using afm_test::uniform;
+
+// A size growing linearly with the distance from a centre, as far fields need.
+struct Graded_size
+{
+  double h0, growth, cx, cy;
+  K::FT operator()(const Point& p) const
+  {
+    return h0 + growth * std::hypot(p.x() - cx, p.y() - cy);
+  }
+};
+
+} // namespace
+
+// The acceptance case of the issue: uniform h = 0.01, no smoothing.
+AFM_TEST_CASE(test_square_with_hole_quality)
+{
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
+  const auto r = mesh_and_check<CDT>(in, uniform<K>(0.01), "square with hole h=0.01");
+  AFM_CHECK_MSG(r.report.mean_radius_ratio >= 0.95, "mean radius ratio " << r.report.mean_radius_ratio);
+  AFM_CHECK(r.report.n_triangles > 15000 && r.report.n_triangles < 25000);
+  // the working set: the front stays a small fraction of the mesh
+  AFM_CHECK_MSG(r.stats.largest_front < r.report.n_vertices / 5,
+                "largest front " << r.stats.largest_front << " of " << r.report.n_vertices << " vertices");
+}
+
+AFM_TEST_CASE(test_square_with_hole_front_invariants)
+{
+  // step by step, checking the front's loops after every step
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.05);
+  mesh_and_check<CDT>(in, uniform<K>(0.05), "square with hole, front checked", 1);
+}
+
+AFM_TEST_CASE(test_l_shape)
+{
+  const auto in = afm_geometry::l_shape(0.05);
+  const auto r = mesh_and_check<CDT>(in, uniform<K>(0.05), "L-shape", 7);
+  AFM_CHECK(r.report.mean_radius_ratio > 0.9);
+}
+
+// Fig. 9 of the paper: two thin plates, two very long edges on the lower
+// plate's upper surface facing fine spacing: fronts of very different
+// length scales merge.
+AFM_TEST_CASE(test_two_thin_plates)
+{
+  const auto in = afm_geometry::two_thin_plates();
+  mesh_and_check<CDT>(in, uniform<K>(0.01), "two thin plates, uniform 0.01", 13);
+  mesh_and_check<CDT>(in, Graded_size{0.01, 0.3, 0.5, 0.}, "two thin plates, graded");
+}
+
+AFM_TEST_CASE(test_naca0012_far_field)
+{
+  const auto in = afm_geometry::naca0012_far_field(100, 20, 64);
+  const auto r = mesh_and_check<CDT>(in, afm_test::Boundary_graded_size<K>(in, 0.2),
+                                     "NACA 0012 in far field, size from the boundary");
+  AFM_CHECK_MSG(r.report.mean_radius_ratio > 0.9, r.report.mean_radius_ratio);
+  // a size field that ignores the fine surface spacing: still valid
+  mesh_and_check<CDT>(in, Graded_size{0.01, 0.25, 0.5, 0.}, "NACA 0012 in far field, coarse field");
+}
+
+AFM_TEST_CASE(test_multi_element_airfoil)
+{
+  const auto in = afm_geometry::multi_element_airfoil(15, 80);
+  const auto r = mesh_and_check<CDT>(in, afm_test::Boundary_graded_size<K>(in, 0.2),
+                                     "four-element airfoil, size from the boundary");
+  AFM_CHECK_MSG(r.report.mean_radius_ratio > 0.9, r.report.mean_radius_ratio);
+}
+
+AFM_TEST_CASE(test_many_holes)
+{
+  const auto in = afm_geometry::many_holes(40, 1);
+  const auto r = mesh_and_check<CDT>(in, uniform<K>(0.02), "many holes", 11);
+  AFM_CHECK(r.report.mean_radius_ratio > 0.85);
+}
+
+// A size field jumping by a factor of 1000 over a short distance: fronts of
+// very different length scales meet (Fig. 2 of the paper). The small sizes
+// sit around a tiny hole whose boundary is discretised at that size, so the
+// fine front really starts there and runs into the coarse one.
+AFM_TEST_CASE(test_size_jump_factor_1000)
+{
+  const auto outer = afm_geometry::subdivided_polygon({{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}}, 0.1);
+  const auto hole = afm_geometry::circle({{0.3, 0.3}}, 0.002, 126, false);
+  const auto in = afm_geometry::polygon_with_holes({outer, hole});
+  auto jump = [](const Point& p) -> K::FT {
+    return std::hypot(p.x() - 0.3, p.y() - 0.3) < 0.004 ? 1e-4 : 0.1;
+  };
+  const auto r1 = mesh_and_check<CDT>(in, jump, "size jump x1000 at distance 0.002 from the hole", 101);
+  AFM_CHECK(r1.report.n_triangles > 1000);
+  // and a smooth but steep variation: x1000 over 0.02
+  auto steep = [](const Point& p) -> K::FT {
+    const double d = std::hypot(p.x() - 0.3, p.y() - 0.3) - 0.002;
+    return 1e-4 * std::pow(1000., (std::max)(0., (std::min)(1., d / 0.02)));
+  };
+  mesh_and_check<CDT>(in, steep, "size x1000 over 0.02");
+}
+
+AFM_TEST_CASE(test_nearly_collinear_boundary)
+{
+  const auto in = afm_geometry::nearly_collinear_boundary(1e-9);
+  mesh_and_check<CDT>(in, uniform<K>(0.02), "nearly collinear boundary", 5);
+  mesh_and_check<CDT>(afm_geometry::nearly_collinear_boundary(1e-14), uniform<K>(0.05),
+                      "nearly collinear boundary 1e-14");
+}
+
+AFM_TEST_CASE(test_offset_1e6)
+{
+  const auto in = afm_geometry::offset(afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02), 1e6, 1e6);
+  const auto r = mesh_and_check<CDT>(in, uniform<K>(0.02), "square with hole offset by 1e6");
+  AFM_CHECK(r.report.mean_radius_ratio > 0.95);
+}
+
+AFM_TEST_CASE(test_constrained_triangulation_plus)
+{
+  typedef afm_test::Types<K>::CDT_plus CDTP;
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.05);
+  mesh_and_check<CDTP>(in, uniform<K>(0.05), "Constrained_triangulation_plus_2");
+}
+
+AFM_TEST_CASE(test_interior_constraint_and_free_point)
+{
+  // a square with a dangling interior segment and a free point: both must
+  // appear in the mesh, the segment with triangles on both sides
+  afm_test::Poly_data in;
+  in.points = {{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}, {{0.3, 0.5}}, {{0.6, 0.55}}, {{0.7, 0.2}}};
+  in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}, {{4, 5}}};
+  mesh_and_check<CDT>(in, uniform<K>(0.05), "interior constraint and free point", 3);
+}
+
+AFM_TEST_CASE(test_determinism)
+{
+  const auto in = afm_geometry::many_holes(15, 3);
+  const auto r1 = mesh_and_check<CDT>(in, uniform<K>(0.03), "determinism run 1");
+  const auto r2 = mesh_and_check<CDT>(in, uniform<K>(0.03), "determinism run 2");
+  AFM_CHECK(r1.mesh.vertices == r2.mesh.vertices);
+  AFM_CHECK(r1.mesh.triangles == r2.mesh.triangles);
+}
+
+AFM_TEST_CASE(test_class_api_equals_free_function)
+{
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.04);
+  const auto by_class = mesh_and_check<CDT>(in, uniform<K>(0.04), "class API");
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  auto seeds = afm_test::seeds_of<CDT>(in);
+  const auto rc = CGAL::advancing_front_mesh_2(cdt, seeds.begin(), seeds.end(), 0.04);
+  AFM_CHECK(rc == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
+  const auto by_function = afm_test::extract_mesh(cdt);
+  AFM_CHECK(by_class.mesh.vertices == by_function.vertices);
+  AFM_CHECK(by_class.mesh.triangles == by_function.triangles);
+}
+
+AFM_TEST_CASE(test_free_function_size_forms)
+{
+  const auto in = afm_geometry::l_shape(0.1);
+  // a lambda sizing field
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    CGAL::advancing_front_mesh_2(cdt, [](const Point& p) { return K::FT(0.05 + 0.05 * p.x()); });
+    AFM_CHECK(afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt)).ok);
+  }
+  // a Mesh_2 criteria object: h = 0.7 * size bound
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    CGAL::advancing_front_mesh_2(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(0.125, 0.1));
+    const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+    AFM_CHECK_MSG(rep.ok, rep.summary());
+  }
+  // invalid sizes are reported, not crashed on
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    bool thrown = false;
+    try {
+      CGAL::advancing_front_mesh_2(cdt, [](const Point&) { return K::FT(-1); });
+    } catch(const std::invalid_argument&) {
+      thrown = true;
+    }
+    AFM_CHECK(thrown);
+  }
+}
+
+AFM_TEST_CASE(test_limits_return_codes_and_valid_mesh)
+{
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02);
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  auto seeds = afm_test::seeds_of<CDT>(in);
+  const auto rc = CGAL::advancing_front_mesh_2(cdt, seeds.begin(), seeds.end(), 0.02, false,
+                                               CGAL::parameters::number_of_iterations(200));
+  AFM_CHECK(rc == CGAL::Advancing_front_mesh_2::ITERATION_LIMIT_REACHED);
+  AFM_CHECK(cdt.is_valid());
+  const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+  AFM_CHECK_MSG(rep.ok, rep.summary());
+}
