@@ -209,10 +209,12 @@ class Poly_line_reader
 {
 public:
   Poly_line_reader(std::istream& in, const std::string& file)
-    : in_(in), buf_(in.rdbuf()), file_(file)
+    : buf_(in.rdbuf()), file_(file)
   {
-    // Reading through the stream buffer avoids a sentry per character, but
-    // a stream already in a failed state must not be read as if it were fine.
+    // Reading through the stream buffer avoids a sentry per character, and
+    // leaves the stream's state alone: setting eofbit could throw from a
+    // stream with exceptions enabled. A stream already in a failed state must
+    // not be read as if it were fine, though.
     if(buf_ == nullptr || in.fail())
       throw Poly_read_error(file_, 0, "cannot read from the stream");
   }
@@ -310,7 +312,6 @@ private:
       return false;
     if(Traits::eq_int_type(buf_->sgetc(), Traits::eof())) {
       at_end_ = true;
-      in_.setstate(std::ios_base::eofbit);
       return false;
     }
     ++line_no_;
@@ -319,7 +320,6 @@ private:
       const Traits::int_type c = buf_->sbumpc();
       if(Traits::eq_int_type(c, Traits::eof())) {
         at_end_ = true;
-        in_.setstate(std::ios_base::eofbit);
         break;
       }
       const char ch = Traits::to_char_type(c);
@@ -362,7 +362,6 @@ private:
     }
   }
 
-  std::istream& in_;
   std::streambuf* buf_;
   std::string file_;
   std::string line_;
@@ -493,10 +492,17 @@ an error naming the faulty line. Accepted input:
   `id x y attribute [maximum area]`, which are checked and then ignored;
 - nothing but comments and blank lines after the last section.
 
-Every line must hold exactly the number of values its section calls for,
-every value must be a complete number (integers where ids and counts are
-expected) and every coordinate finite. Segment endpoints must be existing
-vertices and distinct.
+Every line must hold exactly the number of values its section calls for:
+unlike Triangle, the reader does not default omitted header fields, since a
+short line is more often damage than shorthand. Every value must be a
+complete number (integers where ids, counts and markers are expected), every
+coordinate, attribute and area finite. Segment endpoints must be existing
+vertices and distinct. Segment, hole and region ids follow the same rule as
+vertex ids (Triangle ignores them, but ids out of order betray a damaged
+file). Counts are at most 2147483647 (Triangle's `int`), attributes per
+vertex at most 100000, and a line without its comment at most 1 MiB, so that
+no input makes the reader allocate without bound. The input is read to its
+end, to check that nothing follows the last section.
 
 A header announcing 0 vertices means, as in Triangle, that the vertices are
 in a `.node` file with the same base name: `file_name` with its `.poly`

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <fstream>
+#include <initializer_list>
 #include <ios>
 #include <limits>
 #include <locale>
@@ -234,7 +235,7 @@ inline void svg_clip_polygon(std::vector<std::array<double, 2> >& poly,
 }
 
 // Writes the `d` attribute of one <path> on an integer grid in picture
-// space. Relative moves between grid points are exact, so the short deltas
+// space. Relative steps between grid points are exact, so the short deltas
 // of small edges save space without accumulating rounding drift.
 class Svg_path_writer
 {
@@ -263,7 +264,8 @@ public:
     start_y_ = gy;
   }
 
-  // Only for open polylines: a closed one must stay in one subpath for 'z'.
+  // `may_split` must be false within a closed loop: its 'z' has to stay in
+  // the subpath it closes.
   void line_to(const std::array<double, 2>& p, bool may_split = true)
   {
     long long gx, gy;
