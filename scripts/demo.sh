@@ -12,6 +12,6 @@ cmake --build build/release -j2 --target afmesh_2 afm_make_input
 mkdir -p out
 B=build/release/examples/Advancing_front_mesh_2
 "$B/afm_make_input" multi-element-airfoil out/airfoil.poly
-"$B/afmesh_2" out/airfoil.poly --size "${AFM_DEMO_SIZE:-0.05}" \
+"$B/afmesh_2" out/airfoil.poly --size "${AFM_DEMO_SIZE:-0.04}" \
   -o out/airfoil.off -o out/airfoil.vtu -o out/airfoil.svg --stats
 echo "wrote out/airfoil.off, out/airfoil.vtu and out/airfoil.svg" >&2

@@ -19,7 +19,7 @@ int main(int argc, char* argv[])
   const std::string name = argc > 1 ? argv[1] : "multi-element-airfoil";
   const std::string out = argc > 2 ? argv[2] : name + ".poly";
   CGAL::Advancing_front_mesh_2::IO::Poly_data pd;
-  if(name == "multi-element-airfoil") pd = afm_geometry::multi_element_airfoil(4, 64);
+  if(name == "multi-element-airfoil") pd = afm_geometry::multi_element_airfoil(4, 256);
   else if(name == "square-with-hole") pd = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
   else if(name == "l-shape") pd = afm_geometry::l_shape(0.02);
   else if(name == "two-thin-plates") pd = afm_geometry::two_thin_plates();

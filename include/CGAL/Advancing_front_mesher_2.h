@@ -238,7 +238,14 @@ public:
         rc = Advancing_front_mesh_2::TIME_LIMIT_REACHED;
         break;
       }
-      if(!step()) break;
+      try {
+        if(!step()) break;
+      } catch(...) {
+        // leave a valid triangulation behind before reporting the error
+        close_remaining_front();
+        finish();
+        throw;
+      }
       ++steps;
     }
     if(rc != Advancing_front_mesh_2::MESH_COMPLETE) close_remaining_front();
@@ -280,7 +287,13 @@ public:
   {
     if(!initialized_) init();
     if(finished_) return false;
-    if(step()) return true;
+    try {
+      if(step()) return true;
+    } catch(...) {
+      close_remaining_front();
+      finish();
+      throw;
+    }
     finish();
     return false;
   }
@@ -548,6 +561,15 @@ private:
       }
     }
     for(Face_handle f : domain_faces) tds().delete_face(f);
+    // the input constraints never change: a static index of them answers
+    // the visibility questions of the circle search
+    constraint_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span);
+    for(const Pending& p : pending) {
+      if(p.u > p.v && p.behind == Face_handle()) continue; // interior constraint: once
+      const double dx = x(p.v) - x(p.u), dy = y(p.v) - y(p.u);
+      constraint_octree_.insert(0.5 * (x(p.u) + x(p.v)), 0.5 * (y(p.u) + y(p.v)),
+                                0.5 * std::sqrt(dx * dx + dy * dy), key(p.u, p.v));
+    }
     for(const Pending& p : pending) add_front_edge(p.u, p.v, p.behind, p.index, p.constrained);
     for(Vid v = 0; v < vertex_.size(); ++v) update_vertex_state(v);
     if(front_.empty()) finished_ = true;
@@ -761,6 +783,10 @@ private:
       if(it == front_.end() || it->second.version != e.version) continue;
       ++stats_.front_edges_processed;
       process_edge(source(e.key), target(e.key));
+      // A new point may leave the edge open (its apex after the cavity was
+      // another point): the edge stays on the front and must be queued again.
+      auto left = front_.find(e.key);
+      if(left != front_.end()) queue_.push(Queue_entry{e.squared_length, e.key, left->second.version});
       visitor_.on_progress(domain_area_ > 0 ? (std::min)(1., meshed_area_ / domain_area_) : 1.);
       return true;
     }
@@ -841,15 +867,6 @@ private:
         r = (std::max)(2 * r, needed * (1 + 1e-9));
       } else {
         if(r > 4 * domain_diameter_) {
-#ifdef AFM_DEBUG
-          std::cerr << "edge " << a << " (" << x(a) << "," << y(a) << ") -> " << b << " (" << x(b) << "," << y(b) << ") nbh " << nbh_.vertices.size() << "\n";
-          for(std::size_t z : nbh_.vertices) { Vid c = Vid(z); if(c==a||c==b) continue;
-            std::cerr << " cand " << c << " (" << x(c) << "," << y(c) << ") left " << (pred_.orientation(pt(a),pt(b),pt(c))==LEFT_TURN)
-              << " secA " << in_free_sector(a, pt(c)) << " secB " << in_free_sector(b, pt(c)) << " secCA " << in_free_sector(c, pt(a)) << " secCB " << in_free_sector(c, pt(b))
-              << " visA " << visible(a, pt(a), c, pt(c), nbh_) << " visB " << visible(b, pt(b), c, pt(c), nbh_) << " out " << out_[c].size() << " in " << in_[c].size() << "\n"; }
-          std::cerr << " a out:"; for(Vid o: out_[a]) std::cerr << " " << o; std::cerr << " in:"; for(Vid o: in_[a]) std::cerr << " " << o; std::cerr << "\n";
-          std::cerr << " b out:"; for(Vid o: out_[b]) std::cerr << " " << o; std::cerr << " in:"; for(Vid o: in_[b]) std::cerr << " " << o; std::cerr << "\n";
-#endif
           throw std::logic_error("Advancing_front_mesher_2: internal error: a front edge has no "
                                  "visible apex (the front is inconsistent)");
         }
@@ -858,25 +875,56 @@ private:
     }
   }
 
-  // The circle of face f contains p, and p can see f: p is inside f or on
-  // the unmeshed side of one of its front edges. Interior faces are reached
-  // by the neighbour walk instead (Fig. 6).
-  bool is_broken(Face_handle f, const Point& p)
+  // The circle of face f contains p and p can see f, as constrained
+  // Delaunay insertion requires: p is inside f, or the segment from p to a
+  // point of f (its centroid, or the midpoint of one of its front edges)
+  // crosses no input constraint. Non-constraint front edges do not hide
+  // anything: they are not edges of the final triangulation's constraints.
+  // Faces reached only through the mesh are found by the neighbour walk
+  // (Fig. 6). Without this test, a triangle whose circle reaches across a
+  // thin wall (a plate, a hole) would be removed for a point that cannot
+  // see it, opening a cavity that point cannot fill.
+  bool is_broken(Face_handle f, const Point& p, double px, double py)
   {
     ++stats_.incircle_tests;
     if(!pred_.strictly_inside_circle(f->vertex(0)->point(), f->vertex(1)->point(),
                                      f->vertex(2)->point(), p))
       return false;
+    const Vid v0 = id_of(f->vertex(0)), v1 = id_of(f->vertex(1)), v2 = id_of(f->vertex(2));
     bool inside = true;
-    for(int i = 0; i < 3; ++i) {
-      const Orientation o =
-        pred_.orientation(f->vertex(ccw(i))->point(), f->vertex(cw(i))->point(), p);
-      if(o == RIGHT_TURN) {
+    for(int i = 0; i < 3; ++i)
+      if(pred_.orientation(f->vertex(ccw(i))->point(), f->vertex(cw(i))->point(), p) == RIGHT_TURN)
         inside = false;
-        if(f->neighbor(i) == Face_handle()) return true; // beyond a front edge
-      }
+    if(inside) return true;
+    if(sees_point(p, px, py, (x(v0) + x(v1) + x(v2)) / 3, (y(v0) + y(v1) + y(v2)) / 3)) return true;
+    for(int i = 0; i < 3; ++i) {
+      if(f->neighbor(i) != Face_handle()) continue;
+      const Vid g = id_of(f->vertex(ccw(i))), h = id_of(f->vertex(cw(i)));
+      if(sees_point(p, px, py, 0.5 * (x(g) + x(h)), 0.5 * (y(g) + y(h)))) return true;
     }
-    return inside;
+    return false;
+  }
+
+  // Does the segment from p to (qx, qy) cross no input constraint? The end
+  // point is rounded; this only selects which triangles are removed.
+  bool sees_point(const Point& p, double px, double py, double qx, double qy)
+  {
+    const Point q(qx, qy);
+    bool blocked = false;
+    ++stats_.edge_octree_queries;
+    constraint_octree_.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * std::hypot(qx - px, qy - py),
+                             [&](Edge_key k) {
+      if(blocked) return;
+      const Point& pu = pt(source(k));
+      const Point& pv = pt(target(k));
+      // a proper crossing only: touching an end point does not hide
+      const Orientation o1 = pred_.orientation(p, q, pu), o2 = pred_.orientation(p, q, pv);
+      if(o1 == COLLINEAR || o2 == COLLINEAR || o1 == o2) return;
+      const Orientation o3 = pred_.orientation(pu, pv, p), o4 = pred_.orientation(pu, pv, q);
+      if(o3 == COLLINEAR || o4 == COLLINEAR || o3 == o4) return;
+      blocked = true;
+    });
+    return !blocked;
   }
 
   // Steps 6-12 for a new point p = (px, py) ahead of front edge a -> b.
@@ -891,8 +939,8 @@ private:
     broken_.clear();
     broken_set_.clear();
     ++stats_.triangle_octree_queries;
-    triangle_octree_.query(px, py, 0., [this, &p](Face_handle f) {
-      if(broken_set_.find(f) == broken_set_.end() && is_broken(f, p)) {
+    triangle_octree_.query(px, py, 0., [this, &p, px, py](Face_handle f) {
+      if(broken_set_.find(f) == broken_set_.end() && is_broken(f, p, px, py)) {
         broken_set_.insert(f);
         broken_.push_back(f);
       }
@@ -915,7 +963,7 @@ private:
     const Circle cp = circle_of(x(a), y(a), x(b), y(b), px, py);
     double rho_new = (std::max)(rho, cp.r);
     for(Face_handle f : broken_) rho_new = (std::max)(rho_new, circle_of(f).r);
-    if(rho_new > rho && !broken_.empty()) ++stats_.size_bound_raised;
+    if(rho_new > (std::max)(rho, cp.r)) ++stats_.size_bound_raised;
 
     // step 9: remove them, remembering them to restore them if p is rejected
     removed_.clear();
@@ -925,7 +973,17 @@ private:
       remove_triangle(f, &cavity_edges_);
     }
 
-    const double star_radius = (std::max)({2 * closure_tolerance * rho_new, std::hypot(px - x(a), py - y(a)),
+    // Triangles about p are accepted up to the local bound, and up to the
+    // raised bound of step 10 when they are not needles: a large cavity is
+    // reconnected to p as the paper does (which is what lets fronts of very
+    // different sizes merge, Fig. 9), but a cavity vertex nearly in line
+    // with p and a short cavity edge is left to later steps instead of
+    // making a sliver. Every accepted circle passes through p with radius
+    // at most `accept_raised`, so the disk of twice that about p holds
+    // every point that matters.
+    const double accept = closure_tolerance * (std::max)(rho, cp.r);
+    const double accept_raised = closure_tolerance * rho_new;
+    const double star_radius = (std::max)({2 * accept_raised, std::hypot(px - x(a), py - y(a)),
                                            std::hypot(px - x(b), py - y(b))}) * (1 + 1e-9);
     gather(px, py, star_radius, nbh_);
     if(!is_acceptable_point(a, b, p, px, py, d)) {
@@ -950,7 +1008,6 @@ private:
     work_.clear();
     work_.push_back(key(a, b));
     for(Edge_key k : cavity_edges_) work_.push_back(k);
-    const double accept = closure_tolerance * rho_new;
     std::vector<Edge_key> created;
     while(!work_.empty()) {
       const Edge_key k = work_.back();
@@ -966,7 +1023,9 @@ private:
       if(!at_p && w != pid) continue;
       const Circle c = circle_of(u, v, w);
       if(std::hypot(c.cx - px, c.cy - py) + c.r > star_radius) continue;
-      if(c.r > accept && !(u == a && v == b)) continue;
+      if(c.r > accept && !(u == a && v == b) &&
+         (c.r > accept_raised || radius_ratio(u, v, w) < raised_bound_min_quality))
+        continue;
       created.clear();
       make_triangle(u, v, w, &created);
       ++stats_.triangles_around_new_points;
@@ -999,6 +1058,15 @@ private:
     return true;
   }
 
+  double radius_ratio(Vid a, Vid b, Vid c) const
+  {
+    const double l0 = std::hypot(x(b) - x(c), y(b) - y(c)), l1 = std::hypot(x(a) - x(c), y(a) - y(c)),
+                 l2 = std::hypot(x(a) - x(b), y(a) - y(b));
+    const double area = 0.5 * std::abs((x(b) - x(a)) * (y(c) - y(a)) - (y(b) - y(a)) * (x(c) - x(a)));
+    const double s = 0.5 * (l0 + l1 + l2);
+    return 8 * area * area / (s * l0 * l1 * l2);
+  }
+
   static double segment_distance(double px, double py, double ax, double ay, double bx, double by)
   {
     const double dx = bx - ax, dy = by - ay;
@@ -1013,6 +1081,12 @@ private:
   // existing points only, which always terminates and leaves a valid mesh.
   void close_remaining_front()
   {
+    // every front edge gets a fresh queue entry, so none can be missed
+    for(const auto& fe : front_) {
+      const Vid u = source(fe.first), v = target(fe.first);
+      const double dx = x(v) - x(u), dy = y(v) - y(u);
+      queue_.push(Queue_entry{dx * dx + dy * dy, fe.first, fe.second.version});
+    }
     while(!queue_.empty()) {
       const Queue_entry e = queue_.top();
       queue_.pop();
@@ -1028,6 +1102,7 @@ private:
     if(finished_) return;
     finished_ = true;
     CGAL_assertion(front_.empty());
+    if(!front_.empty()) close_remaining_front(); // never expected; keeps the result valid
     restore_delaunay_property();
     // vertices may still point at faces deleted during meshing
     for(auto f = cdt_.all_faces_begin(); f != cdt_.all_faces_end(); ++f)
@@ -1082,6 +1157,9 @@ private:
   // A new point must keep this fraction of its distance to the edge from
   // every other front point and edge.
   static constexpr double point_clearance = 0.5;
+  // Triangles about a new point larger than the local bound (allowed by the
+  // raised bound of step 10) must have at least this radius ratio.
+  static constexpr double raised_bound_min_quality = 0.25;
 
   // ------------------------------------------------------------ members
   CDT& cdt_;
@@ -1107,6 +1185,7 @@ private:
   Advancing_front_mesh_2::internal::Dynamic_point_index index_;
   Triangle_octree triangle_octree_;
   Edge_octree edge_octree_;
+  Edge_octree constraint_octree_;
   double domain_diameter_ = 0;
   double meshed_area_ = 0, domain_area_ = 0;
   Advancing_front_mesh_2::Statistics stats_;
@@ -1143,7 +1222,14 @@ struct Sizing_field_maker<Gt, T, std::enable_if_t<std::is_arithmetic<T>::value |
                                                   std::is_same<T, typename Gt::FT>::value> >
 {
   typedef Uniform_sizing_field_2<Gt> type;
-  static type make(const T& t) { return type(typename Gt::FT(t)); }
+  static type make(const T& t)
+  {
+    // checked before the triangulation is touched
+    const double h = CGAL::to_double(t);
+    if(!(h > 0) || !std::isfinite(h))
+      throw std::invalid_argument("advancing_front_mesh_2: the target edge length must be a positive finite number");
+    return type(typename Gt::FT(t));
+  }
 };
 template <class Gt, class T>
 struct Sizing_field_maker<Gt, T, std::enable_if_t<Has_size_bound<T>::value> >

@@ -12,6 +12,7 @@
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
@@ -620,6 +621,28 @@ AFM_TEST_CASE(test_io_write_svg)
   AFM_CHECK(ns.str().compare(0, 4, "<svg") == 0);
 }
 
+AFM_TEST_CASE(test_io_writers_accept_triangulation_plus)
+{
+  typedef CGAL::Constrained_triangulation_plus_2<CDT> CDT_plus;
+  CDT_plus cdt;
+  const CDT::Point square[4] = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  for(int i = 0; i < 4; ++i)
+    cdt.insert_constraint(square[i], square[(i + 1) % 4]);
+  std::vector<CDT::Point> no_seeds;
+  CGAL::Delaunay_mesher_2<CDT_plus, CGAL::Delaunay_mesh_size_criteria_2<CDT_plus> >::mark_facets(
+    cdt, no_seeds.begin(), no_seeds.end());
+
+  std::ostringstream off;
+  off.precision(2);
+  afm_io::write_OFF(off, cdt);
+  AFM_CHECK(off.str().compare(0, 10, "OFF\n4 2 0\n") == 0);
+  AFM_CHECK_MSG(off.precision() == 2, "stream state not restored");
+  std::ostringstream svg;
+  afm_io::write_SVG(svg, cdt);
+  // The four sides are constrained: the black layer is there.
+  AFM_CHECK(svg.str().find("stroke=\"#000000\"") != std::string::npos);
+}
+
 AFM_TEST_CASE(test_io_write_mesh_by_extension)
 {
   CDT cdt;
@@ -632,6 +655,9 @@ AFM_TEST_CASE(test_io_write_mesh_by_extension)
   afm_io::write_mesh(temp_path("out.VTU"), cdt);
   const std::string vtu = read_text(temp_path("out.VTU"));
   AFM_CHECK(vtu.find("<VTKFile") != std::string::npos);
+  // Well-formed XML to the end (CGAL's binary mode would leave a tag open).
+  AFM_CHECK(vtu.size() > 12 && vtu.compare(vtu.size() - 11, 11, "</VTKFile>\n") == 0);
+  AFM_CHECK(vtu.find("AppendedData") == std::string::npos);
   // CGAL's VTU writer adds the constrained edges as line cells.
   const std::size_t nc = static_cast<std::size_t>(
     std::distance(cdt.constrained_edges_begin(), cdt.constrained_edges_end()));

@@ -58,8 +58,10 @@ AFM_TEST_CASE(test_l_shape)
 AFM_TEST_CASE(test_two_thin_plates)
 {
   const auto in = afm_geometry::two_thin_plates();
-  mesh_and_check<CDT>(in, uniform<K>(0.01), "two thin plates, uniform 0.01", 13);
-  mesh_and_check<CDT>(in, Graded_size{0.01, 0.3, 0.5, 0.}, "two thin plates, graded");
+  // the size follows the fine plate spacing, so the long edges face a fine front
+  mesh_and_check<CDT>(in, afm_test::Boundary_graded_size<K>(in, 0.15), "two thin plates, size from the boundary", 13);
+  // a uniform size coarser than the plates' spacing in the gap
+  mesh_and_check<CDT>(in, uniform<K>(0.04), "two thin plates, uniform 0.04");
 }
 
 AFM_TEST_CASE(test_naca0012_far_field)
@@ -182,17 +184,27 @@ AFM_TEST_CASE(test_free_function_size_forms)
     const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
     AFM_CHECK_MSG(rep.ok, rep.summary());
   }
-  // invalid sizes are reported, not crashed on
-  {
+  // invalid sizes are reported, not crashed on, and the triangulation is
+  // left valid: untouched for a bad number, closed without new points when
+  // a sizing field fails during the run
+  for(int mode = 0; mode < 3; ++mode) {
     CDT cdt;
     afm_test::build_cdt(cdt, in);
     bool thrown = false;
     try {
-      CGAL::advancing_front_mesh_2(cdt, [](const Point&) { return K::FT(-1); });
+      if(mode == 0) CGAL::advancing_front_mesh_2(cdt, -1.0);
+      if(mode == 1) CGAL::advancing_front_mesh_2(cdt, [](const Point&) { return K::FT(-1); });
+      if(mode == 2)
+        CGAL::advancing_front_mesh_2(cdt, [](const Point& p) { return K::FT(p.x() > 1.5 ? std::nan("") : 0.05); });
     } catch(const std::invalid_argument&) {
       thrown = true;
     }
-    AFM_CHECK(thrown);
+    AFM_CHECK_MSG(thrown, "mode " << mode);
+    AFM_CHECK(cdt.is_valid());
+    if(mode > 0) {
+      const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+      AFM_CHECK_MSG(rep.ok, "mode " << mode << ": " << rep.summary());
+    }
   }
 }
 

@@ -42,6 +42,6 @@ AFM_TEST_CASE(test_kernel_exact_rational)
 AFM_TEST_CASE(test_kernel_epeck_thin_plates)
 {
   typedef afm_test::Types<Epeck>::CDT CDT;
-  afm_test::mesh_and_check<CDT>(afm_geometry::two_thin_plates(), afm_test::uniform<Epeck>(0.02),
-                                "Epeck: two thin plates");
+  const auto in = afm_geometry::two_thin_plates();
+  afm_test::mesh_and_check<CDT>(in, afm_test::Boundary_graded_size<Epeck>(in, 0.3), "Epeck: two thin plates");
 }

@@ -42,7 +42,8 @@ struct Statistics
   std::size_t triangles_around_new_points = 0;
   /// triangles removed because a new point broke their circumcircle (steps 7-9)
   std::size_t triangles_removed = 0;
-  /// point insertions in which step 10 raised the size bound
+  /// point insertions in which step 10 raised the size bound (a broken
+  /// triangle was larger than the bound)
   std::size_t size_bound_raised = 0;
   /// queries of the circle octree (front triangles) and of the front-edge
   /// diametral-circle octree

@@ -240,9 +240,14 @@ inline void svg_clip_polygon(std::vector<std::array<double, 2> >& poly,
 class Svg_path_writer
 {
 public:
+  // `splittable` tells whether the subpaths may be spread over several
+  // elements: not for a fill, where a hole only stays empty if its loop is in
+  // the same element as the loop around it.
   Svg_path_writer(std::ostream& os, const std::string& attributes,
-                  double x0, double y1, double scale, int decimals)
-    : os_(os), attributes_(attributes), x0_(x0), y1_(y1), decimals_(decimals)
+                  double x0, double y1, double scale, int decimals,
+                  bool splittable)
+    : os_(os), attributes_(attributes), x0_(x0), y1_(y1), decimals_(decimals),
+      splittable_(splittable)
   {
     pow10_ = 1;
     for(int i = 0; i < decimals; ++i)
@@ -252,10 +257,11 @@ public:
 
   void move_to(const std::array<double, 2>& p)
   {
-    // A new element every so often: libxml2, behind many SVG tools, refuses
-    // attribute values over 10 MB, and each subpath starts with an absolute
-    // move, so the split changes nothing in the picture.
-    if(opened_ && element_length_ > max_element_length)
+    // A new element every so often, since a stroke looks the same drawn in
+    // one element or several: librsvg 2.54 (through libxml2) gives up on
+    // files with many path data much longer than 256 KB, and each subpath
+    // starts with an absolute move, so the split is free.
+    if(splittable_ && opened_ && element_length_ > max_element_length)
       finish();
     long long gx, gy;
     to_grid(p, gx, gy);
@@ -264,14 +270,12 @@ public:
     start_y_ = gy;
   }
 
-  // `may_split` must be false within a closed loop: its 'z' has to stay in
-  // the subpath it closes.
-  void line_to(const std::array<double, 2>& p, bool may_split = true)
+  void line_to(const std::array<double, 2>& p)
   {
     long long gx, gy;
     to_grid(p, gx, gy);
     // One polyline can be long enough to need splitting by itself.
-    if(may_split && element_length_ > 2 * max_element_length) {
+    if(splittable_ && element_length_ > 2 * max_element_length) {
       finish();
       put_move(x_, y_);
     }
@@ -305,7 +309,7 @@ public:
   }
 
 private:
-  static constexpr std::size_t max_element_length = std::size_t(1) << 20;
+  static constexpr std::size_t max_element_length = std::size_t(1) << 16;
 
   void put_move(long long gx, long long gy)
   {
@@ -411,6 +415,7 @@ private:
   std::string attributes_;
   double x0_, y1_;
   int decimals_;
+  bool splittable_;
   long long pow10_;
   double grid_scale_;
   std::string buf_;
@@ -551,7 +556,7 @@ inline void svg_fill_domain(const std::vector<std::array<double, 2> >& pts,
       continue;
     out.move_to(loop[0]);
     for(std::size_t i = 1; i < loop.size(); ++i)
-      out.line_to(loop[i], false);
+      out.line_to(loop[i]);
     out.close();
   }
 }
@@ -766,9 +771,9 @@ mesh, and the view box fits the in-domain vertices, or the window of
 `options`, with a small margin.
 
 The output is meant to stay usable for meshes of millions of triangles: each
-edge is drawn once, the edges are chained into polylines inside one `<path>`
-per layer (split every megabyte, the most many XML parsers accept being 10 MB
-per attribute), the fill is drawn from the domain boundary only, and coordinates
+edge is drawn once, the edges are chained into polylines inside a `<path>`
+per layer (split every 64 KB, since some SVG libraries fail on much longer
+path data), the fill is drawn from the domain boundary only, and coordinates
 are rounded on a grid of about six significant digits of the picture size,
 far below what can be seen. With a window, edges wholly outside it are
 skipped and those reaching far outside are clipped, so that a deep zoom
@@ -904,7 +909,7 @@ void write_SVG(std::ostream& os, const CDT& cdt,
 
   {
     internal::Svg_path_writer fill(os, "fill=\"#dde7f3\" fill-rule=\"nonzero\" stroke=\"none\"",
-                                   view.xmin, view.ymax, scale, decimals);
+                                   view.xmin, view.ymax, scale, decimals, false);
     internal::svg_fill_domain(pts, boundary, view, clip, fill);
     fill.finish();
   }
@@ -912,7 +917,7 @@ void write_SVG(std::ostream& os, const CDT& cdt,
     internal::Svg_path_writer thin(os, "fill=\"none\" stroke=\"#6f88a6\" stroke-width=\"" +
                                        internal::svg_number(thin_w) +
                                        "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"",
-                                   view.xmin, view.ymax, scale, decimals);
+                                   view.xmin, view.ymax, scale, decimals, true);
     internal::svg_draw_edges(pts, thin_edges, view, clip, thin);
     thin.finish();
   }
@@ -920,7 +925,7 @@ void write_SVG(std::ostream& os, const CDT& cdt,
     internal::Svg_path_writer thick(os, "fill=\"none\" stroke=\"#000000\" stroke-width=\"" +
                                         internal::svg_number(thick_w) +
                                         "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"",
-                                    view.xmin, view.ymax, scale, decimals);
+                                    view.xmin, view.ymax, scale, decimals, true);
     internal::svg_draw_edges(pts, thick_edges, view, clip, thick);
     thick.finish();
   }
