@@ -163,7 +163,7 @@ private:
     for(std::size_t id : ids) pts.push_back(Point_and_id(points_[id], id));
     tree_ids_.swap(ids);
     tree_.reset(new Tree(pts.begin(), pts.end()));
-    tree_->build();
+    if(!pts.empty()) tree_->build(); // Kd_tree refuses to build on no points
     tree_count_ = pts.size();
     dead_in_tree_ = 0;
     buffer_.clear();
