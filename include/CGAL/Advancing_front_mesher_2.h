@@ -128,14 +128,14 @@ private:
 
   struct Queue_entry
   {
-    double squared_length;
+    double length;
     Edge_key key;
     std::uint32_t version;
     bool operator<(const Queue_entry& o) const
     {
       // std::priority_queue is a max-heap: invert to pop the shortest edge;
       // ties broken by key so that runs are deterministic
-      if(squared_length != o.squared_length) return squared_length > o.squared_length;
+      if(length != o.length) return length > o.length;
       return key > o.key;
     }
   };
@@ -416,11 +416,16 @@ private:
   {
     // circumcircle relative to a, which keeps the rounding error small for
     // coordinates far from the origin
-    const double bax = bx - ax, bay = by - ay, cax = cx - ax, cay = cy - ay;
+    // and in a frame scaled to unit size, so that the cubic terms neither
+    // overflow nor underflow for very large or very small coordinates
+    const double scale = (std::max)({std::abs(bx - ax), std::abs(by - ay), std::abs(cx - ax), std::abs(cy - ay)});
+    if(!(scale > 0) || !std::isfinite(scale))
+      return Circle{ax, ay, std::numeric_limits<double>::infinity()};
+    const double bax = (bx - ax) / scale, bay = (by - ay) / scale, cax = (cx - ax) / scale, cay = (cy - ay) / scale;
     const double d = 2 * (bax * cay - bay * cax);
     const double b2 = bax * bax + bay * bay, c2 = cax * cax + cay * cay;
     const double ux = (cay * b2 - bay * c2) / d, uy = (bax * c2 - cax * b2) / d;
-    return Circle{ax + ux, ay + uy, std::sqrt(ux * ux + uy * uy)};
+    return Circle{ax + ux * scale, ay + uy * scale, std::hypot(ux, uy) * scale};
   }
 
   Circle circle_of(Vid a, Vid b, Vid c) const
@@ -458,13 +463,13 @@ private:
     fe.version = ++version_counter_;
     const double mx = 0.5 * (x(u) + x(v)), my = 0.5 * (y(u) + y(v));
     const double dx = x(v) - x(u), dy = y(v) - y(u);
-    const double len2 = dx * dx + dy * dy;
-    fe.circle_item = edge_octree_.insert(mx, my, 0.5 * std::sqrt(len2), key(u, v));
+    const double len = std::hypot(dx, dy);
+    fe.circle_item = edge_octree_.insert(mx, my, 0.5 * len, key(u, v));
     front_.emplace(key(u, v), fe);
     out_[u].push_back(v);
     in_[v].push_back(u);
     if(behind != Face_handle() && behind->is_in_domain()) add_front_edge_to_face(behind);
-    queue_.push(Queue_entry{len2, key(u, v), fe.version});
+    queue_.push(Queue_entry{len, key(u, v), fe.version});
     stats_.largest_front = (std::max)(stats_.largest_front, front_.size());
     update_vertex_state(u);
     update_vertex_state(v);
@@ -532,7 +537,6 @@ private:
     // The octrees' root box: circles of triangles that will ever exist lie
     // near the domain; generous padding keeps the overflow list short.
     const double span = (std::max)(xmax - xmin, ymax - ymin);
-    domain_diameter_ = std::sqrt((xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin));
     triangle_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span);
     edge_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span);
 
@@ -568,7 +572,7 @@ private:
       if(p.u > p.v && p.behind == Face_handle()) continue; // interior constraint: once
       const double dx = x(p.v) - x(p.u), dy = y(p.v) - y(p.u);
       constraint_octree_.insert(0.5 * (x(p.u) + x(p.v)), 0.5 * (y(p.u) + y(p.v)),
-                                0.5 * std::sqrt(dx * dx + dy * dy), key(p.u, p.v));
+                                0.5 * std::hypot(dx, dy), key(p.u, p.v));
     }
     for(const Pending& p : pending) add_front_edge(p.u, p.v, p.behind, p.index, p.constrained);
     for(Vid v = 0; v < vertex_.size(); ++v) update_vertex_state(v);
@@ -786,7 +790,7 @@ private:
       // A new point may leave the edge open (its apex after the cavity was
       // another point): the edge stays on the front and must be queued again.
       auto left = front_.find(e.key);
-      if(left != front_.end()) queue_.push(Queue_entry{e.squared_length, e.key, left->second.version});
+      if(left != front_.end()) queue_.push(Queue_entry{e.length, e.key, left->second.version});
       visitor_.on_progress(domain_area_ > 0 ? (std::min)(1., meshed_area_ / domain_area_) : 1.);
       return true;
     }
@@ -796,7 +800,7 @@ private:
   void process_edge(Vid a, Vid b)
   {
     const double ax = x(a), ay = y(a), bx = x(b), by = y(b);
-    const double L = std::sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
+    const double L = std::hypot(bx - ax, by - ay);
     const double mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
     const double nx = -(by - ay) / L, ny = (bx - ax) / L; // unit normal towards the unmeshed side
     const double rho = target_circumradius(mx, my);       // step 3
@@ -856,17 +860,20 @@ private:
     double r = (std::max)(radius, L);
     for(;;) {
       gather(mx, my, r, nbh_);
+      // the search is exhaustive once it holds every active vertex (or its
+      // radius stopped being a number): the loop ends on that, not on a count
+      const bool everything = nbh_.vertices.size() >= index_.size() || !std::isfinite(r);
       const Vid w = delaunay_apex(a, b, nbh_);
       if(w != no_vertex) {
         const Circle c = circle_of(a, b, w);
         const double needed = std::hypot(c.cx - mx, c.cy - my) + c.r;
-        if(needed <= r || r > 4 * domain_diameter_) {
+        if(needed <= r || everything) {
           close_on_existing_point(a, b, w);
           return;
         }
         r = (std::max)(2 * r, needed * (1 + 1e-9));
       } else {
-        if(r > 4 * domain_diameter_) {
+        if(everything) {
           throw std::logic_error("Advancing_front_mesher_2: internal error: a front edge has no "
                                  "visible apex (the front is inconsistent)");
         }
@@ -931,6 +938,7 @@ private:
   // Returns false (leaving the mesh unchanged) when p is not acceptable.
   bool insert_point(Vid a, Vid b, double px, double py, double d, double rho)
   {
+    if(!std::isfinite(px) || !std::isfinite(py)) return false;
     const Point p(px, py);
     if(pred_.orientation(pt(a), pt(b), p) != LEFT_TURN) return false;
 
@@ -1085,7 +1093,7 @@ private:
     for(const auto& fe : front_) {
       const Vid u = source(fe.first), v = target(fe.first);
       const double dx = x(v) - x(u), dy = y(v) - y(u);
-      queue_.push(Queue_entry{dx * dx + dy * dy, fe.first, fe.second.version});
+      queue_.push(Queue_entry{std::hypot(dx, dy), fe.first, fe.second.version});
     }
     while(!queue_.empty()) {
       const Queue_entry e = queue_.top();
@@ -1186,7 +1194,6 @@ private:
   Triangle_octree triangle_octree_;
   Edge_octree edge_octree_;
   Edge_octree constraint_octree_;
-  double domain_diameter_ = 0;
   double meshed_area_ = 0, domain_area_ = 0;
   Advancing_front_mesh_2::Statistics stats_;
 
