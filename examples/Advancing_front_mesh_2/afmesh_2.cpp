@@ -1,13 +1,21 @@
 // afmesh_2: the command-line front end of Advancing_front_mesh_2.
 //
-//   afmesh_2 INPUT.poly --size H -o OUT.off [-o OUT.vtu] [-o OUT.svg]
+//   afmesh_2 INPUT.poly [--size H] [--sources FILE] [--grading G|off]
+//            -o OUT.off [-o OUT.vtu] [-o OUT.svg]
 //            [--kernel epick|epeck|exact-rational] [--stats]
+//
+// --size alone meshes with the uniform target edge length H. Otherwise the
+// size field is a Poisson_sizing_field_2 made from the boundary spacing and
+// the sources of FILE (one "x y h" per line), limited by the gradation G
+// (default 0.2) and, with --size, bounded above by H.
 //
 // Exit codes: 0 success; 1 invalid input (one line "afmesh_2: error:
 // FILE[:LINE]: what is wrong" on stderr); 2 bad usage; 3 internal error.
 
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
+#include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 
@@ -21,6 +29,7 @@
 #include <boost/program_options.hpp>
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -45,6 +54,10 @@ struct Options
 {
   std::string input;
   double size = 0;
+  bool has_size = false;
+  std::string sources;
+  std::string grading = "0.2";
+  double gradation = AFM::Poisson_sizing_field_options::default_gradation; // 0: off
   std::vector<std::string> outputs;
   std::string kernel = "epick";
   bool stats = false;
@@ -84,6 +97,20 @@ struct Types
   // legal input has no crossing segments: refuse them instead of splitting
   typedef CGAL::Constrained_Delaunay_triangulation_2<
     K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag> CDT;
+};
+
+// Either a uniform size or a background field, so that one mesher type
+// serves both.
+template <class K>
+struct Cli_sizing_field
+{
+  typedef AFM::Poisson_sizing_field_2<K> Background;
+  double uniform = 0;
+  std::shared_ptr<const Background> background;
+  typename K::FT operator()(const typename K::Point_2& p) const
+  {
+    return background ? (*background)(p) : typename K::FT(uniform);
+  }
 };
 
 void json_number(std::ostream& os, const char* name, double v, bool comma = true)
@@ -136,10 +163,34 @@ int run(const Options& opt)
   for(const auto& h : in.holes) seeds.push_back(Point(h[0], h[1]));
   const double t_boundary = seconds_since(t_cdt);
 
+  const auto t_field = std::chrono::steady_clock::now();
+  Cli_sizing_field<K> sizing;
+  sizing.uniform = opt.size;
+  if(!opt.has_size || !opt.sources.empty()) {
+    std::vector<AFM::Size_source_2<K> > sources;
+    if(!opt.sources.empty()) {
+      try {
+        for(const auto& s : AFM::IO::read_size_sources(opt.sources))
+          sources.emplace_back(Point(s[0], s[1]), s[2]);
+      } catch(const AFM::IO::Poly_read_error& e) {
+        throw Input_error(e.what());
+      }
+    }
+    std::vector<std::pair<Point, typename K::FT> > spacing;
+    AFM::boundary_spacing_2(cdt, std::back_inserter(spacing));
+    if(spacing.empty() && sources.empty())
+      throw Input_error(opt.input + ": no segments to derive a size from; give --size or --sources");
+    AFM::Poisson_sizing_field_options field_options;
+    field_options.limit_gradation = opt.gradation > 0;
+    if(opt.gradation > 0) field_options.gradation = opt.gradation;
+    if(opt.has_size) field_options.max_size = opt.size;
+    sizing.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
+  }
+  const double t_size_field = seconds_since(t_field);
+
   Progress_visitor progress;
   progress.enabled = isatty(2) != 0;
-  CGAL::Advancing_front_mesher_2<CDT, AFM::Uniform_sizing_field_2<K>, Progress_visitor> mesher(
-    cdt, AFM::Uniform_sizing_field_2<K>(typename K::FT(opt.size)), progress);
+  CGAL::Advancing_front_mesher_2<CDT, Cli_sizing_field<K>, Progress_visitor> mesher(cdt, sizing, progress);
   mesher.set_seeds(seeds.begin(), seeds.end());
   const auto t_mesh = std::chrono::steady_clock::now();
   mesher.refine_mesh();
@@ -166,11 +217,26 @@ int run(const Options& opt)
     std::ostringstream os;
     os.precision(6);
     os << "{\"input\": \"" << opt.input << "\", \"kernel\": \"" << opt.kernel << "\", ";
-    json_number(os, "size", opt.size);
+    json_number(os, "size", opt.has_size ? opt.size : std::nan(""));
+    os << "\"size_field\": {";
+    if(sizing.background) {
+      const auto& fs = sizing.background->statistics();
+      os << "\"kind\": \"poisson\", \"sources\": " << fs.number_of_sources
+         << ", \"boundary_points\": " << fs.number_of_boundary_points << ", \"quadtree_leaves\": "
+         << fs.number_of_leaves << ", \"quadtree_corners\": " << fs.number_of_corners << ", ";
+      json_number(os, "gradation", opt.gradation > 0 ? opt.gradation : std::nan(""));
+      json_number(os, "smallest", fs.smallest_size);
+      json_number(os, "largest", fs.largest_size);
+    } else {
+      os << "\"kind\": \"uniform\", ";
+    }
+    json_number(os, "build_time", t_size_field, false);
+    os << "}, ";
     os << "\"vertices\": " << st.number_of_vertices << ", \"triangles\": " << st.number_of_faces << ", ";
     os << "\"time\": {";
     json_number(os, "read", t_read);
     json_number(os, "boundary", t_boundary);
+    json_number(os, "size_field", t_size_field);
     json_number(os, "mesh", t_meshing);
     json_number(os, "write", t_writing);
     json_number(os, "total", seconds_since(t_start), false);
@@ -207,12 +273,20 @@ int run(const Options& opt)
 Options parse(int argc, char* argv[])
 {
   Options opt;
-  po::options_description visible("Usage: afmesh_2 INPUT.poly --size H -o OUT [-o OUT ...] [options]\n\n"
+  po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
                                   "Meshes the domain of a Triangle .poly file with the advancing-front\n"
-                                  "Delaunay algorithm of Mavriplis (1992).\n\nOptions");
+                                  "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
+                                  "length is uniform; otherwise it comes from a background field: the boundary\n"
+                                  "spacing and the point sources, diffused by a Poisson solve on a quadtree,\n"
+                                  "with a gradation limit, and bounded above by --size when given.\n\nOptions");
   visible.add_options()
     ("help,h", "print this help and exit")
-    ("size", po::value<double>(&opt.size), "target edge length H (uniform)")
+    ("size", po::value<double>(&opt.size), "target edge length H: uniform, or the largest size with --sources")
+    ("sources", po::value<std::string>(&opt.sources),
+     "size sources, one 'x y h' per line ('#' comments): size h prescribed at (x, y)")
+    ("grading", po::value<std::string>(&opt.grading)->default_value("0.2"),
+     "gradation limit G of the background field: the size changes by at most G per unit length "
+     "along each axis; 'off' to switch it off")
     ("output,o", po::value<std::vector<std::string> >(&opt.outputs),
      "output file, format chosen by extension: .off .vtu .node/.ele .msh .svg (repeatable)")
     ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
@@ -236,8 +310,23 @@ Options parse(int argc, char* argv[])
     std::exit(EXIT_SUCCESS);
   }
   if(opt.input.empty()) throw Usage_error("no input file given");
-  if(!vm.count("size")) throw Usage_error("--size H is required");
-  if(!(opt.size > 0) || !std::isfinite(opt.size)) throw Usage_error("--size must be a positive number");
+  opt.has_size = vm.count("size") > 0;
+  if(opt.has_size && (!(opt.size > 0) || !std::isfinite(opt.size)))
+    throw Usage_error("--size must be a positive number");
+  if(opt.grading == "off") {
+    opt.gradation = 0;
+  } else {
+    std::size_t used = 0;
+    double g = 0;
+    try {
+      g = std::stod(opt.grading, &used);
+    } catch(const std::exception&) {
+      used = 0;
+    }
+    if(used != opt.grading.size() || !(g > 0) || !std::isfinite(g))
+      throw Usage_error("--grading must be a positive number or 'off', not '" + opt.grading + "'");
+    opt.gradation = g;
+  }
   if(opt.kernel != "epick" && opt.kernel != "epeck" && opt.kernel != "exact-rational")
     throw Usage_error("--kernel must be epick, epeck or exact-rational, not '" + opt.kernel + "'");
   for(const std::string& out : opt.outputs) {
