@@ -31,6 +31,7 @@ holding large data should hold it through a (shared) pointer.
 \cgalHasModelsBegin
 \cgalHasModels{CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<GeomTraits>}
 \cgalHasModels{CGAL::Advancing_front_mesh_2::Size_criteria_sizing_field_2<Criteria, GeomTraits>}
+\cgalHasModels{CGAL::Advancing_front_mesh_2::Poisson_sizing_field_2<GeomTraits>}
 \cgalHasModels{CGAL::Lipschitz_sizing_field_2<Tr>}
 \cgalHasModelsEnd
 
