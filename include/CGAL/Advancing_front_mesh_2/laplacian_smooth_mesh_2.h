@@ -1,0 +1,245 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_LAPLACIAN_SMOOTH_MESH_2_H
+#define CGAL_ADVANCING_FRONT_MESH_2_LAPLACIAN_SMOOTH_MESH_2_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
+What `CGAL::laplacian_smooth_mesh_2()` did.
+*/
+struct Smoothing_statistics
+{
+  std::size_t passes = 0;                   ///< smoothing + swapping alternations done
+  std::size_t movable_vertices = 0;         ///< interior vertices free to move (first pass)
+  std::size_t moves = 0;                    ///< accepted moves, over all passes
+  std::size_t rejected_moves = 0;           ///< moves refused by the guard (full and half step)
+  std::size_t flips = 0;                    ///< edge flips restoring the constrained Delaunay property
+  std::vector<std::size_t> flips_per_pass;  ///< the same, pass by pass
+};
+
+namespace internal {
+
+// 2r/R of a triangle, in double precision: 1 when equilateral, 0 when flat.
+inline double radius_ratio(double ax, double ay, double bx, double by, double cx, double cy)
+{
+  const double a = std::hypot(bx - cx, by - cy), b = std::hypot(cx - ax, cy - ay), c = std::hypot(ax - bx, ay - by);
+  const double area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax); // twice the signed area
+  if(!(area2 > 0)) return 0;
+  const double s = 0.5 * (a + b + c);
+  return 2 * area2 * area2 / (s * a * b * c);
+}
+
+// Squared sine of the smallest angle, as Mesh_2's criteria measure shape:
+// the smallest angle faces the shortest edge, sin = 2 area / (b c) with b, c
+// the two longer edges.
+inline double squared_sine_of_smallest_angle(double ax, double ay, double bx, double by, double cx, double cy)
+{
+  double l[3] = {(bx - cx) * (bx - cx) + (by - cy) * (by - cy), (cx - ax) * (cx - ax) + (cy - ay) * (cy - ay),
+                 (ax - bx) * (ax - bx) + (ay - by) * (ay - by)};
+  std::sort(l, l + 3);
+  const double area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  if(!(area2 > 0)) return 0;
+  return area2 * area2 / (l[1] * l[2]);
+}
+
+// Lawson's flips on the edges between two in-domain faces until every such
+// edge is locally Delaunay (strictly: cocircular quadrilaterals are left
+// alone). Constrained edges are never flipped. Returns the number of flips.
+template <class CDT>
+std::size_t restore_constrained_delaunay(CDT& cdt)
+{
+  typedef typename CDT::Face_handle Face_handle;
+  typedef typename CDT::Edge Edge;
+  std::vector<Edge> stack;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain())
+      for(int i = 0; i < 3; ++i) stack.emplace_back(f, i);
+  std::size_t flips = 0;
+  while(!stack.empty()) {
+    Edge e = stack.back();
+    stack.pop_back();
+    Face_handle f = e.first;
+    const int i = e.second;
+    const Face_handle g = f->neighbor(i);
+    if(!f->is_in_domain() || !g->is_in_domain() || cdt.is_infinite(g)) continue;
+    if(!cdt.is_flipable(f, i, false)) continue;
+    cdt.flip(f, i);
+    ++flips;
+    // the four edges of the new quadrilateral's sides
+    for(Face_handle h : {f, g})
+      for(int k = 0; k < 3; ++k)
+        if(h->neighbor(k) != f && h->neighbor(k) != g) stack.emplace_back(h, k);
+  }
+  return flips;
+}
+
+} // namespace internal
+} // namespace Advancing_front_mesh_2
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
+Improves the shape of the triangles of a mesh as in Fig. 13 of Mavriplis
+(1992): constrained Laplacian smoothing of the interior vertices, then edge
+swapping that restores the constrained Delaunay property, alternated a few
+times.
+
+Only in-domain faces (`is_in_domain()`) are considered. A vertex moves only
+if every face around it is a finite in-domain face, no constrained edge is
+incident to it, and the `vertex_is_constrained_map` does not hold it: the
+boundary, isolated input points and everything outside the domain never
+move. Each movable vertex, in turn, is tried at the centroid of its
+neighbours, then halfway there; a move is accepted only if every triangle
+around the vertex stays positively oriented (exact predicate of the
+triangulation's traits) and neither the smallest radius ratio 2r/R nor the
+smallest angle around the vertex decreases (computed in double precision), so
+smoothing never inverts a triangle and never makes the worst triangle of a
+star worse by either measure. Each pass of
+smoothing is followed by Lawson's flips on the edges between in-domain faces
+until the triangulation is constrained Delaunay again; the input segments
+are never flipped. Few edges need flipping after smoothing, as the paper
+notes.
+
+Works on the result of `CGAL::advancing_front_mesh_2()` and on a CGAL Mesh_2
+result (`CGAL::refine_Delaunay_mesh_2()`) alike.
+
+\tparam CDT a `CGAL::Constrained_Delaunay_triangulation_2` (or
+`Constrained_triangulation_plus_2`) whose faces have `is_in_domain()`, for
+example `CGAL::Delaunay_mesh_face_base_2`.
+
+\param cdt the mesh, modified in place
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the number of smoothing + swapping passes}
+    \cgalParamDefault{5}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{a readable property map from `CDT::Vertex_handle`
+      to `bool`: vertices mapped to `true` never move, in addition to those on
+      constrained edges (use it for isolated input points)}
+    \cgalParamDefault{no vertex held}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns what was done: passes, moves, flips.
+*/
+template <class CDT, class NamedParameters = parameters::Default_named_parameters>
+Advancing_front_mesh_2::Smoothing_statistics
+laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_circulator Face_circulator;
+  typedef typename CDT::Vertex_circulator Vertex_circulator;
+  typedef typename CDT::Geom_traits::FT FT;
+  typedef typename CDT::Point Point;
+
+  const std::size_t passes = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(5));
+  auto held = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                               Constant_property_map<Vertex_handle, bool>(false));
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+
+  Advancing_front_mesh_2::Smoothing_statistics stats;
+  std::vector<Vertex_handle> movable;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if(get(held, Vertex_handle(v)) || cdt.are_there_incident_constraints(v)) continue;
+    bool interior = true;
+    Face_circulator fc = cdt.incident_faces(v), done = fc;
+    if(fc == nullptr) continue;
+    do {
+      if(cdt.is_infinite(fc) || !fc->is_in_domain()) { interior = false; break; }
+    } while(++fc != done);
+    if(interior) movable.push_back(v);
+  }
+  stats.movable_vertices = movable.size();
+
+  std::vector<Point> ring;
+  // The worst radius ratio and the worst smallest angle (as a squared
+  // sine) of the star of a vertex placed at p; `valid` is false if a
+  // triangle would not be positively oriented.
+  auto star_quality = [&](const Point& p, bool& valid) {
+    // the ring is ordered counter-clockwise: each consecutive pair and p
+    // form one triangle of the star
+    std::pair<double, double> worst(1., 1.);
+    valid = true;
+    const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
+    for(std::size_t k = 0; k < ring.size(); ++k) {
+      const Point& a = ring[k];
+      const Point& b = ring[(k + 1) % ring.size()];
+      if(orientation(p, a, b) != CGAL::LEFT_TURN) {
+        valid = false;
+        return worst;
+      }
+      const double ax = CGAL::to_double(a.x()), ay = CGAL::to_double(a.y());
+      const double bx = CGAL::to_double(b.x()), by = CGAL::to_double(b.y());
+      worst.first = (std::min)(worst.first, Advancing_front_mesh_2::internal::radius_ratio(px, py, ax, ay, bx, by));
+      worst.second = (std::min)(worst.second,
+                                Advancing_front_mesh_2::internal::squared_sine_of_smallest_angle(px, py, ax, ay, bx, by));
+    }
+    return worst;
+  };
+
+  for(std::size_t pass = 0; pass < passes; ++pass) {
+    for(Vertex_handle v : movable) {
+      ring.clear();
+      Vertex_circulator vc = cdt.incident_vertices(v), done = vc;
+      FT sx(0), sy(0);
+      do {
+        ring.push_back(vc->point());
+        sx += vc->point().x();
+        sy += vc->point().y();
+      } while(++vc != done);
+      const FT n(static_cast<double>(ring.size()));
+      const Point old = v->point();
+      const Point target(sx / n, sy / n);
+      bool valid = false;
+      const std::pair<double, double> before = star_quality(old, valid);
+      bool moved = false;
+      for(const Point& candidate : {target, Point((old.x() + target.x()) / 2, (old.y() + target.y()) / 2)}) {
+        const std::pair<double, double> after = star_quality(candidate, valid);
+        if(valid && after.first >= before.first && after.second >= before.second) {
+          v->set_point(candidate);
+          moved = true;
+          break;
+        }
+        ++stats.rejected_moves;
+      }
+      if(moved) ++stats.moves;
+    }
+    const std::size_t flips = Advancing_front_mesh_2::internal::restore_constrained_delaunay(cdt);
+    stats.flips += flips;
+    stats.flips_per_pass.push_back(flips);
+    ++stats.passes;
+  }
+  return stats;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_LAPLACIAN_SMOOTH_MESH_2_H

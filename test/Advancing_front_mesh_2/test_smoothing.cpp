@@ -1,0 +1,137 @@
+// Laplacian smoothing and edge swapping (laplacian_smooth_mesh_2): the
+// acceptance figures on the square with a hole, validity (constrained
+// Delaunay included) on other geometries, on a Mesh_2 result, held vertices.
+#include "afm_test_mesh.h"
+#include "afm_geometries.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+#include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <map>
+#include <set>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef afm_test::Types<K>::CDT CDT;
+typedef K::Point_2 Point;
+
+template <class Tr>
+afm_check::Report smooth_and_check(Tr& cdt, const afm_test::Poly_data& in, std::size_t passes, const std::string& label,
+                                   CGAL::Advancing_front_mesh_2::Smoothing_statistics* out = nullptr)
+{
+  const afm_check::Report before = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+  const auto st = CGAL::laplacian_smooth_mesh_2(cdt, CGAL::parameters::number_of_iterations(passes));
+  AFM_CHECK(cdt.is_valid());
+  const afm_check::Report after = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+  std::cout << "  " << label << ", before: " << before.summary() << "\n  " << label << ", after " << passes
+            << " passes (" << st.moves << " moves, " << st.flips << " flips): " << after.summary() << "\n";
+  AFM_CHECK_MSG(after.ok, label << ": " << after.summary());
+  AFM_CHECK(after.n_triangles == before.n_triangles && after.n_vertices == before.n_vertices);
+  AFM_CHECK(st.passes == passes && st.flips_per_pass.size() == passes);
+  // the guard: the worst triangle never gets worse
+  AFM_CHECK_MSG(after.min_radius_ratio >= before.min_radius_ratio - 1e-12,
+                label << ": min radius ratio " << before.min_radius_ratio << " -> " << after.min_radius_ratio);
+  if(out) *out = st;
+  return after;
+}
+
+template <class Tr>
+void mesh_into(Tr& cdt, const afm_test::Poly_data& in, double h)
+{
+  afm_test::build_cdt(cdt, in);
+  auto seeds = afm_test::seeds_of<Tr>(in);
+  CGAL::advancing_front_mesh_2(cdt, seeds.begin(), seeds.end(), h);
+}
+
+} // namespace
+
+// The acceptance case: square with a hole, h = 0.01, 5 passes.
+AFM_TEST_CASE(test_smoothing_square_with_hole)
+{
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
+  CDT cdt;
+  mesh_into(cdt, in, 0.01);
+  const auto r = smooth_and_check(cdt, in, 5, "square with hole h=0.01");
+  const auto q = CGAL::Advancing_front_mesh_2::mesh_quality(cdt);
+  AFM_CHECK_MSG(q.mean_radius_ratio >= 0.98, "mean " << q.mean_radius_ratio);
+  AFM_CHECK_MSG(q.share_above_0_9 >= 0.97, "share above 0.9: " << q.share_above_0_9);
+  AFM_CHECK_MSG(q.min_angle_degrees >= 30, "min angle " << q.min_angle_degrees);
+  AFM_CHECK(r.n_non_delaunay_edges == 0);
+}
+
+// Boundary and isolated points never move; a held vertex does not either.
+AFM_TEST_CASE(test_smoothing_keeps_boundary_and_held_vertices)
+{
+  const auto in = afm_geometry::l_shape(0.05);
+  CDT cdt;
+  mesh_into(cdt, in, 0.05);
+  std::map<CDT::Vertex_handle, Point> before;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) before[v] = v->point();
+  // hold one interior vertex
+  CDT::Vertex_handle held;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if(!cdt.are_there_incident_constraints(v)) { held = v; break; }
+  AFM_CHECK(held != CDT::Vertex_handle());
+  std::set<CDT::Vertex_handle> held_set{held};
+  auto held_map = boost::make_function_property_map<CDT::Vertex_handle>(
+    [&](CDT::Vertex_handle v) { return held_set.count(v) > 0; });
+  const auto st = CGAL::laplacian_smooth_mesh_2(cdt, CGAL::parameters::number_of_iterations(3).vertex_is_constrained_map(held_map));
+  AFM_CHECK(st.moves > 0);
+  std::size_t moved = 0;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    const bool same = before.at(v) == v->point();
+    if(cdt.are_there_incident_constraints(v) || CDT::Vertex_handle(v) == held) AFM_CHECK(same);
+    moved += !same;
+  }
+  AFM_CHECK(moved > 0);
+}
+
+// A many-holes case and a graded one, and the exact kernel.
+AFM_TEST_CASE(test_smoothing_other_geometries)
+{
+  {
+    const auto in = afm_geometry::many_holes(40, 1);
+    CDT cdt;
+    mesh_into(cdt, in, 0.02);
+    smooth_and_check(cdt, in, 5, "many holes h=0.02");
+  }
+  {
+    const auto in = afm_geometry::naca0012_far_field(100, 20, 64);
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    auto seeds = afm_test::seeds_of<CDT>(in);
+    CGAL::advancing_front_mesh_2(cdt, seeds.begin(), seeds.end(), afm_test::Boundary_graded_size<K>(in, 0.2));
+    smooth_and_check(cdt, in, 5, "NACA 0012 graded");
+  }
+  {
+    typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+    typedef afm_test::Types<EK>::CDT ECDT;
+    const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.05);
+    ECDT cdt;
+    mesh_into(cdt, in, 0.05);
+    smooth_and_check(cdt, in, 3, "square with hole, Epeck");
+  }
+}
+
+// On a CGAL Mesh_2 result: valid, constrained Delaunay, and better shaped.
+AFM_TEST_CASE(test_smoothing_mesh_2_result)
+{
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02);
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  auto seeds = afm_test::seeds_of<CDT>(in);
+  CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), CGAL::Delaunay_mesh_size_criteria_2<CDT>(0.125, 0.03));
+  const double mean_before = CGAL::Advancing_front_mesh_2::mesh_quality(cdt).mean_radius_ratio;
+  CGAL::Advancing_front_mesh_2::Smoothing_statistics st;
+  smooth_and_check(cdt, in, 5, "Mesh_2 result", &st);
+  const double mean_after = CGAL::Advancing_front_mesh_2::mesh_quality(cdt).mean_radius_ratio;
+  AFM_CHECK_MSG(mean_after > mean_before + 0.02, "mean " << mean_before << " -> " << mean_after);
+  AFM_CHECK(st.flips > 0); // Mesh_2's meshes are far from smooth: swapping has work to do
+}
