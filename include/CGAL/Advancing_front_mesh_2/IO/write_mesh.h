@@ -55,6 +55,11 @@ struct SVG_options
   /// coordinates) is drawn, to zoom on a detail of a large mesh
   bool has_window = false;
   double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+  /// when `true`, triangles are filled by their radius ratio 2r/R: dark red
+  /// below 0.3, red below 0.5, orange below 0.7, yellow below 0.8, light
+  /// green below 0.9, green below 0.95, pale blue from 0.95 (equilateral);
+  /// one path element per colour keeps large meshes fast to write and view
+  bool color_by_quality = false;
 };
 
 namespace internal {
@@ -912,6 +917,42 @@ void write_SVG(std::ostream& os, const CDT& cdt,
                                    view.xmin, view.ymax, scale, decimals, false);
     internal::svg_fill_domain(pts, boundary, view, clip, fill);
     fill.finish();
+  }
+  if(options.color_by_quality) {
+    static const double upper[7] = {0.3, 0.5, 0.7, 0.8, 0.9, 0.95, 2.};
+    static const char* const colour[7] = {"#7f0000", "#e31a1c", "#fd8d3c", "#fed976",
+                                          "#c7e9a0", "#74c476", "#d4e8f5"};
+    std::vector<std::vector<std::size_t> > bins(7);
+    for(std::size_t fi = 0; fi < nf; ++fi) {
+      const P& a = pts[m.triangles[fi][0]];
+      const P& b = pts[m.triangles[fi][1]];
+      const P& c = pts[m.triangles[fi][2]];
+      // drawn unclipped: only triangles within the clip box, all of whose
+      // pixel coordinates are then small; the plain fill shows under others
+      if(internal::svg_outcode(a, clip) | internal::svg_outcode(b, clip) | internal::svg_outcode(c, clip))
+        continue;
+      if(internal::svg_outcode(a, view) & internal::svg_outcode(b, view) & internal::svg_outcode(c, view))
+        continue;
+      const double la = std::hypot(b[0] - c[0], b[1] - c[1]), lb = std::hypot(c[0] - a[0], c[1] - a[1]);
+      const double lc = std::hypot(a[0] - b[0], a[1] - b[1]);
+      const double area2 = std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+      const double sp = 0.5 * (la + lb + lc);
+      const double rr = area2 > 0 ? 2 * area2 * area2 / (sp * la * lb * lc) : 0;
+      std::size_t k = 0;
+      while(rr >= upper[k] && k < 6) ++k;
+      bins[k].push_back(fi);
+    }
+    for(std::size_t k = 0; k < 7; ++k) {
+      internal::Svg_path_writer fill(os, std::string("fill=\"") + colour[k] + "\" stroke=\"none\"",
+                                     view.xmin, view.ymax, scale, decimals, false);
+      for(std::size_t fi : bins[k]) {
+        fill.move_to(pts[m.triangles[fi][0]]);
+        fill.line_to(pts[m.triangles[fi][1]]);
+        fill.line_to(pts[m.triangles[fi][2]]);
+        fill.close();
+      }
+      fill.finish();
+    }
   }
   {
     internal::Svg_path_writer thin(os, "fill=\"none\" stroke=\"#6f88a6\" stroke-width=\"" +
