@@ -2,7 +2,8 @@
 //
 //   afmesh_2 INPUT.poly [--size H] [--sources FILE] [--grading G|off]
 //            -o OUT.off [-o OUT.vtu] [-o OUT.svg]
-//            [--kernel epick|epeck|exact-rational] [--stats]
+//            [--smooth N] [--svg-color plain|quality] [--histogram OUT.svg]
+//            [--kernel epick|epeck|exact-rational] [--stats] [--report]
 //
 // --size alone meshes with the uniform target edge length H. Otherwise the
 // size field is a Poisson_sizing_field_2 made from the boundary spacing and
@@ -16,6 +17,8 @@
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_quality_histogram.h>
+#include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 
@@ -27,12 +30,15 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <boost/program_options.hpp>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <chrono>
 #include <memory>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
+#include <set>
 #include <iostream>
 #include <list>
 #include <sstream>
@@ -61,6 +67,10 @@ struct Options
   std::vector<std::string> outputs;
   std::string kernel = "epick";
   bool stats = false;
+  bool report = false;
+  std::size_t smooth = 0;
+  std::string svg_color = "plain";
+  std::string histogram;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t)
@@ -201,19 +211,77 @@ int run(const Options& opt)
     throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
   }
 
+  // Smoothing moves mesher points only: the input's points (isolated ones
+  // included) are held.
+  const auto t_smooth = std::chrono::steady_clock::now();
+  AFM::Smoothing_statistics smoothing;
+  const bool want_quality = opt.stats || opt.report || !opt.histogram.empty();
+  AFM::Mesh_quality unsmoothed;
+  if(want_quality) unsmoothed = AFM::mesh_quality(cdt, sizing);
+  if(opt.smooth > 0) {
+    std::set<typename CDT::Vertex_handle> input_vertices(vh.begin(), vh.end());
+    auto held = boost::make_function_property_map<typename CDT::Vertex_handle>(
+      [&](typename CDT::Vertex_handle v) { return input_vertices.count(v) > 0; });
+    smoothing = CGAL::laplacian_smooth_mesh_2(
+      cdt, CGAL::parameters::number_of_iterations(opt.smooth).vertex_is_constrained_map(held));
+  }
+  const double t_smoothing = seconds_since(t_smooth);
+  const AFM::Mesh_quality q = want_quality && opt.smooth > 0 ? AFM::mesh_quality(cdt, sizing) : unsmoothed;
+
   const auto t_write = std::chrono::steady_clock::now();
+  auto write_failed = [&](const std::string& out, const std::exception& e) {
+    std::cerr << program << ": error: " << out << ": " << e.what() << "\n";
+    return 3;
+  };
   for(const std::string& out : opt.outputs) {
     try {
-      AFM::IO::write_mesh(out, cdt);
+      if(out.size() >= 4 && out.compare(out.size() - 4, 4, ".svg") == 0) {
+        std::ofstream os(out);
+        AFM::IO::SVG_options svg;
+        svg.title = opt.input;
+        svg.color_by_quality = opt.svg_color == "quality";
+        AFM::IO::write_SVG(os, cdt, svg);
+        if(!os) throw std::runtime_error("cannot write " + out);
+      } else {
+        AFM::IO::write_mesh(out, cdt);
+      }
     } catch(const std::exception& e) {
-      std::cerr << program << ": error: " << out << ": " << e.what() << "\n";
-      return 3;
+      return write_failed(out, e);
     }
+  }
+  if(!opt.histogram.empty()) {
+    std::ofstream os(opt.histogram);
+    AFM::IO::write_quality_histogram_SVG(os, q, opt.input);
+    if(!os) return write_failed(opt.histogram, std::runtime_error("cannot write " + opt.histogram));
   }
   const double t_writing = seconds_since(t_write);
 
+  if(opt.report) {
+    std::ostringstream os;
+    os << std::setprecision(4);
+    os << opt.input << ": " << st.number_of_vertices << " vertices, " << q.number_of_triangles << " triangles in "
+       << t_meshing << " s (" << (t_meshing > 0 ? st.number_of_faces / t_meshing : 0) << " triangles/s)";
+    if(opt.smooth > 0)
+      os << ", then " << smoothing.passes << " smoothing passes in " << t_smoothing << " s (" << smoothing.moves
+         << " moves, " << smoothing.flips << " flips)";
+    os << "\n";
+    auto line = [&](const char* when, const AFM::Mesh_quality& m) {
+      os << "  " << when << "radius ratio 2r/R: min " << m.min_radius_ratio << ", 1% " << m.radius_ratio_p1
+         << ", 5% " << m.radius_ratio_p5 << ", median " << m.radius_ratio_median << ", mean "
+         << m.mean_radius_ratio << "; " << 100 * m.share_above_0_9 << "% above 0.9\n"
+         << "  " << when << "angles: " << m.min_angle_degrees << " to " << m.max_angle_degrees << " degrees, "
+         << 100 * m.share_angles_below_30 << "% below 30\n"
+         << "  " << when << "edge length / h: " << m.min_edge_over_size << " to " << m.max_edge_over_size
+         << ", mean " << m.mean_edge_over_size << ", " << 100 * m.share_edges_within_sqrt2
+         << "% within [0.71, 1.41]\n";
+    };
+    if(opt.smooth > 0) line("before smoothing, ", unsmoothed);
+    line("", q);
+    // standard output, unless the JSON of --stats must stay alone there
+    (opt.stats ? std::cerr : std::cout) << os.str();
+  }
+
   if(opt.stats) {
-    const AFM::Mesh_quality q = AFM::mesh_quality(cdt);
     std::ostringstream os;
     os.precision(6);
     os << "{\"input\": \"" << opt.input << "\", \"kernel\": \"" << opt.kernel << "\", ";
@@ -238,6 +306,7 @@ int run(const Options& opt)
     json_number(os, "boundary", t_boundary);
     json_number(os, "size_field", t_size_field);
     json_number(os, "mesh", t_meshing);
+    json_number(os, "smooth", t_smoothing);
     json_number(os, "write", t_writing);
     json_number(os, "total", seconds_since(t_start), false);
     os << "}, \"triangles_per_second\": " << (t_meshing > 0 ? st.number_of_faces / t_meshing : 0) << ", ";
@@ -263,8 +332,22 @@ int run(const Options& opt)
     json_number(os, "mean_radius_ratio", q.mean_radius_ratio);
     json_number(os, "share_radius_ratio_above_0_9", q.share_above_0_9);
     json_number(os, "min_angle_degrees", q.min_angle_degrees);
-    json_number(os, "max_angle_degrees", q.max_angle_degrees, false);
-    os << "}}";
+    json_number(os, "max_angle_degrees", q.max_angle_degrees);
+    json_number(os, "radius_ratio_p1", q.radius_ratio_p1);
+    json_number(os, "radius_ratio_p5", q.radius_ratio_p5);
+    json_number(os, "radius_ratio_median", q.radius_ratio_median);
+    json_number(os, "share_angles_below_30", q.share_angles_below_30);
+    os << "\"radius_ratio_histogram\": [";
+    for(std::size_t k = 0; k < q.radius_ratio_histogram.size(); ++k) os << (k ? ", " : "") << q.radius_ratio_histogram[k];
+    os << "], \"angle_histogram_10_degrees\": [";
+    for(std::size_t k = 0; k < q.angle_histogram.size(); ++k) os << (k ? ", " : "") << q.angle_histogram[k];
+    os << "], ";
+    json_number(os, "min_edge_over_size", q.min_edge_over_size);
+    json_number(os, "max_edge_over_size", q.max_edge_over_size);
+    json_number(os, "mean_edge_over_size", q.mean_edge_over_size);
+    json_number(os, "share_edges_within_sqrt2", q.share_edges_within_sqrt2, false);
+    os << "}, \"smoothing\": {\"passes\": " << smoothing.passes << ", \"moves\": " << smoothing.moves
+       << ", \"rejected_moves\": " << smoothing.rejected_moves << ", \"flips\": " << smoothing.flips << "}}";
     std::cout << os.str() << std::endl;
   }
   return 0;
@@ -273,6 +356,7 @@ int run(const Options& opt)
 Options parse(int argc, char* argv[])
 {
   Options opt;
+  long long smooth = 0;
   po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
                                   "Meshes the domain of a Triangle .poly file with the advancing-front\n"
                                   "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
@@ -291,7 +375,14 @@ Options parse(int argc, char* argv[])
      "output file, format chosen by extension: .off .vtu .node/.ele .msh .svg (repeatable)")
     ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
      "CGAL kernel: epick (default), epeck or exact-rational")
-    ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout");
+    ("smooth", po::value<long long>(&smooth)->default_value(0),
+     "N passes (0 to 1000) of guarded Laplacian smoothing and Delaunay edge swapping after meshing")
+    ("svg-color", po::value<std::string>(&opt.svg_color)->default_value("plain"),
+     "SVG outputs: 'plain', or 'quality' to colour triangles by radius ratio")
+    ("histogram", po::value<std::string>(&opt.histogram), "write the quality histograms as SVG to this file")
+    ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout")
+    ("report", po::bool_switch(&opt.report),
+     "print a readable quality summary (on stdout; on stderr with --stats)");
   po::options_description hidden;
   hidden.add_options()("input", po::value<std::string>(&opt.input));
   po::options_description all;
@@ -313,6 +404,11 @@ Options parse(int argc, char* argv[])
   opt.has_size = vm.count("size") > 0;
   if(opt.has_size && (!(opt.size > 0) || !std::isfinite(opt.size)))
     throw Usage_error("--size must be a positive number");
+  // read as a signed number: Boost reads "-1" into an unsigned as its largest value
+  if(smooth < 0 || smooth > 1000) throw Usage_error("--smooth must be a number of passes from 0 to 1000");
+  opt.smooth = std::size_t(smooth);
+  if(opt.svg_color != "plain" && opt.svg_color != "quality")
+    throw Usage_error("--svg-color must be plain or quality, not '" + opt.svg_color + "'");
   if(opt.grading == "off") {
     opt.gradation = 0;
   } else {
