@@ -213,11 +213,11 @@ int run(const Options& opt)
 
   // Smoothing moves mesher points only: the input's points (isolated ones
   // included) are held.
-  const auto t_smooth = std::chrono::steady_clock::now();
   AFM::Smoothing_statistics smoothing;
   const bool want_quality = opt.stats || opt.report || !opt.histogram.empty();
   AFM::Mesh_quality unsmoothed;
   if(want_quality) unsmoothed = AFM::mesh_quality(cdt, sizing);
+  const auto t_smooth = std::chrono::steady_clock::now();
   if(opt.smooth > 0) {
     std::set<typename CDT::Vertex_handle> input_vertices(vh.begin(), vh.end());
     auto held = boost::make_function_property_map<typename CDT::Vertex_handle>(
@@ -241,7 +241,8 @@ int run(const Options& opt)
         svg.title = opt.input;
         svg.color_by_quality = opt.svg_color == "quality";
         AFM::IO::write_SVG(os, cdt, svg);
-        if(!os) throw std::runtime_error("cannot write " + out);
+        os.close();
+        if(os.fail()) throw std::runtime_error("cannot write " + out);
       } else {
         AFM::IO::write_mesh(out, cdt);
       }
@@ -252,7 +253,8 @@ int run(const Options& opt)
   if(!opt.histogram.empty()) {
     std::ofstream os(opt.histogram);
     AFM::IO::write_quality_histogram_SVG(os, q, opt.input);
-    if(!os) return write_failed(opt.histogram, std::runtime_error("cannot write " + opt.histogram));
+    os.close();
+    if(os.fail()) return write_failed(opt.histogram, std::runtime_error("cannot write " + opt.histogram));
   }
   const double t_writing = seconds_since(t_write);
 

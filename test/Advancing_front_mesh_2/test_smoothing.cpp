@@ -6,6 +6,8 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
@@ -117,6 +119,19 @@ AFM_TEST_CASE(test_smoothing_other_geometries)
     ECDT cdt;
     mesh_into(cdt, in, 0.05);
     smooth_and_check(cdt, in, 3, "square with hole, Epeck");
+  }
+  {
+    // Exact rationals: new positions are rounded to doubles, so that their
+    // size does not grow pass after pass.
+    typedef CGAL::Simple_cartesian<CGAL::Exact_rational> RK;
+    typedef afm_test::Types<RK>::CDT RCDT;
+    const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.1);
+    RCDT cdt;
+    mesh_into(cdt, in, 0.1);
+    smooth_and_check(cdt, in, 20, "square with hole, exact rationals, 20 passes");
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      AFM_CHECK(CGAL::Exact_rational(CGAL::to_double(v->point().x())) == v->point().x() &&
+                CGAL::Exact_rational(CGAL::to_double(v->point().y())) == v->point().y());
   }
 }
 

@@ -23,6 +23,25 @@
 
 namespace CGAL {
 namespace Advancing_front_mesh_2 {
+namespace internal {
+
+// 2r/R of the triangle abc in double precision, 1 when equilateral, 0 when
+// flat or degenerate. Lengths are divided by the longest edge first, so that
+// neither the squared area nor the product of the lengths under- or
+// overflows whatever the coordinates' scale.
+inline double radius_ratio(double ax, double ay, double bx, double by, double cx, double cy)
+{
+  const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+  const double a = std::hypot(cx - bx, cy - by), b = std::hypot(vx, vy), c = std::hypot(ux, uy);
+  const double longest = (std::max)(a, (std::max)(b, c));
+  if(!(longest > 0) || !std::isfinite(longest)) return 0;
+  const double area2 = (ux / longest) * (vy / longest) - (uy / longest) * (vx / longest); // twice the area
+  const double s = 0.5 * (a + b + c) / longest;
+  const double rr = 2 * area2 * area2 / (s * (a / longest) * (b / longest) * (c / longest));
+  return std::isfinite(rr) ? (std::min)(1., rr) : 0.;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgAdvancingFrontMesh2Ref
@@ -89,10 +108,9 @@ Mesh_quality mesh_quality(const CDT& cdt)
     double l[3];
     for(int i = 0; i < 3; ++i)
       l[i] = std::hypot(x[(i + 1) % 3] - x[(i + 2) % 3], y[(i + 1) % 3] - y[(i + 2) % 3]);
-    const double area = 0.5 * std::abs((x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]));
-    const double s = 0.5 * (l[0] + l[1] + l[2]);
-    // 2r/R = 16 area^2 / (s l0 l1 l2) with r = area/s and R = l0 l1 l2 / (4 area)
-    const double rr = (area > 0) ? 8 * area * area / (s * l[0] * l[1] * l[2]) : 0;
+    // for a clockwise (inverted) triangle the shape is that of its mirror image
+    double rr = internal::radius_ratio(x[0], y[0], x[1], y[1], x[2], y[2]);
+    if(rr == 0) rr = internal::radius_ratio(x[0], y[0], x[2], y[2], x[1], y[1]);
     sum += rr;
     if(rr > 0.9) ++above;
     ratios.push_back(rr);
@@ -143,7 +161,7 @@ Mesh_quality mesh_quality(const CDT& cdt, const SizingField& sizing)
   for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
     const auto f = e->first;
     const auto g = f->neighbor(e->second);
-    const bool f_in = f->is_in_domain(), g_in = !cdt.is_infinite(g) && g->is_in_domain();
+    const bool f_in = !cdt.is_infinite(f) && f->is_in_domain(), g_in = !cdt.is_infinite(g) && g->is_in_domain();
     if(!f_in && !g_in) continue;
     const auto& a = f->vertex(CDT::cw(e->second))->point();
     const auto& b = f->vertex(CDT::ccw(e->second))->point();

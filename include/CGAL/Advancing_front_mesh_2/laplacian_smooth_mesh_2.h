@@ -12,6 +12,7 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
@@ -43,27 +44,23 @@ struct Smoothing_statistics
 
 namespace internal {
 
-// 2r/R of a triangle, in double precision: 1 when equilateral, 0 when flat.
-inline double radius_ratio(double ax, double ay, double bx, double by, double cx, double cy)
-{
-  const double a = std::hypot(bx - cx, by - cy), b = std::hypot(cx - ax, cy - ay), c = std::hypot(ax - bx, ay - by);
-  const double area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax); // twice the signed area
-  if(!(area2 > 0)) return 0;
-  const double s = 0.5 * (a + b + c);
-  return 2 * area2 * area2 / (s * a * b * c);
-}
-
 // Squared sine of the smallest angle, as Mesh_2's criteria measure shape:
 // the smallest angle faces the shortest edge, sin = 2 area / (b c) with b, c
 // the two longer edges.
+// Computed on lengths divided by the longest edge, against under- and overflow.
 inline double squared_sine_of_smallest_angle(double ax, double ay, double bx, double by, double cx, double cy)
 {
-  double l[3] = {(bx - cx) * (bx - cx) + (by - cy) * (by - cy), (cx - ax) * (cx - ax) + (cy - ay) * (cy - ay),
-                 (ax - bx) * (ax - bx) + (ay - by) * (ay - by)};
+  const double longest = (std::max)({std::hypot(bx - cx, by - cy), std::hypot(cx - ax, cy - ay),
+                                     std::hypot(ax - bx, ay - by)});
+  if(!(longest > 0) || !std::isfinite(longest)) return 0;
+  const double ux = (bx - ax) / longest, uy = (by - ay) / longest, vx = (cx - ax) / longest, vy = (cy - ay) / longest;
+  const double wx = vx - ux, wy = vy - uy;
+  double l[3] = {wx * wx + wy * wy, vx * vx + vy * vy, ux * ux + uy * uy};
   std::sort(l, l + 3);
-  const double area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  const double area2 = ux * vy - uy * vx;
   if(!(area2 > 0)) return 0;
-  return area2 * area2 / (l[1] * l[2]);
+  const double q = area2 * area2 / (l[1] * l[2]);
+  return std::isfinite(q) ? q : 0.;
 }
 
 // Lawson's flips on the edges between two in-domain faces until every such
@@ -209,19 +206,24 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
     for(Vertex_handle v : movable) {
       ring.clear();
       Vertex_circulator vc = cdt.incident_vertices(v), done = vc;
-      FT sx(0), sy(0);
+      // The new position is computed in double: with exact number types a
+      // position built from positions built from ... would grow without
+      // bound over the passes (the guard's orientation test stays exact).
+      double sx = 0, sy = 0;
       do {
         ring.push_back(vc->point());
-        sx += vc->point().x();
-        sy += vc->point().y();
+        sx += CGAL::to_double(vc->point().x());
+        sy += CGAL::to_double(vc->point().y());
       } while(++vc != done);
-      const FT n(static_cast<double>(ring.size()));
+      const double n = static_cast<double>(ring.size());
       const Point old = v->point();
-      const Point target(sx / n, sy / n);
+      const double ox = CGAL::to_double(old.x()), oy = CGAL::to_double(old.y());
+      const Point target(FT(sx / n), FT(sy / n));
+      const Point halfway(FT(0.5 * (ox + sx / n)), FT(0.5 * (oy + sy / n)));
       bool valid = false;
       const std::pair<double, double> before = star_quality(old, valid);
       bool moved = false;
-      for(const Point& candidate : {target, Point((old.x() + target.x()) / 2, (old.y() + target.y()) / 2)}) {
+      for(const Point& candidate : {target, halfway}) {
         const std::pair<double, double> after = star_quality(candidate, valid);
         if(valid && after.first >= before.first && after.second >= before.second) {
           v->set_point(candidate);

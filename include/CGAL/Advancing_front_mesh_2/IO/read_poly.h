@@ -692,7 +692,9 @@ inline void write_poly(std::ostream& os, const Poly_data& data)
     if(!std::isfinite(h[0]) || !std::isfinite(h[1]))
       throw std::invalid_argument("write_poly: hole coordinate is not finite");
 
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   os.imbue(std::locale::classic());
   os.flags(std::ios_base::dec);
   os.precision(std::numeric_limits<double>::max_digits10);

@@ -12,6 +12,8 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+
 #include <CGAL/IO/io.h>
 #include <CGAL/IO/write_VTU.h>
 #include <CGAL/Unique_hash_map.h>
@@ -132,7 +134,9 @@ void mesh_write_file(const std::string& file_name, Writer writer)
 template <class CDT>
 void mesh_write_node(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   mesh_set_exact_format(os);
   os << m.points.size() << " 2 0 0\n";
   for(std::size_t i = 0; i < m.points.size(); ++i)
@@ -142,7 +146,9 @@ void mesh_write_node(std::ostream& os, const Mesh_domain_view<CDT>& m)
 template <class CDT>
 void mesh_write_ele(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   mesh_set_exact_format(os);
   os << m.triangles.size() << " 3 0\n";
   for(std::size_t i = 0; i < m.triangles.size(); ++i) {
@@ -633,7 +639,9 @@ void write_OFF(std::ostream& os, const CDT& cdt)
 {
   internal::Mesh_domain_view<CDT> m;
   internal::mesh_collect_domain(cdt, m);
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   internal::mesh_set_exact_format(os);
   os << "OFF\n" << m.points.size() << ' ' << m.triangles.size() << " 0\n";
   for(const std::array<double, 2>& p : m.points)
@@ -717,7 +725,9 @@ void write_gmsh_msh(std::ostream& os, const CDT& cdt)
 {
   internal::Mesh_domain_view<CDT> m;
   internal::mesh_collect_domain(cdt, m);
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   internal::mesh_set_exact_format(os);
 
   const std::size_t nv = m.points.size(), nf = m.triangles.size();
@@ -902,7 +912,9 @@ void write_SVG(std::ostream& os, const CDT& cdt,
   const double thin_w = options.stroke_scale * (std::max)(0.05, (std::min)(0.6, 0.08 * mean_px));
   const double thick_w = options.stroke_scale * 1.5;
 
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   os.imbue(std::locale::classic());
 
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\""
@@ -933,18 +945,17 @@ void write_SVG(std::ostream& os, const CDT& cdt,
         continue;
       if(internal::svg_outcode(a, view) & internal::svg_outcode(b, view) & internal::svg_outcode(c, view))
         continue;
-      const double la = std::hypot(b[0] - c[0], b[1] - c[1]), lb = std::hypot(c[0] - a[0], c[1] - a[1]);
-      const double lc = std::hypot(a[0] - b[0], a[1] - b[1]);
-      const double area2 = std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-      const double sp = 0.5 * (la + lb + lc);
-      const double rr = area2 > 0 ? 2 * area2 * area2 / (sp * la * lb * lc) : 0;
+      const double rr = (std::max)(CGAL::Advancing_front_mesh_2::internal::radius_ratio(a[0], a[1], b[0], b[1], c[0], c[1]),
+                                   CGAL::Advancing_front_mesh_2::internal::radius_ratio(a[0], a[1], c[0], c[1], b[0], b[1]));
       std::size_t k = 0;
       while(rr >= upper[k] && k < 6) ++k;
       bins[k].push_back(fi);
     }
     for(std::size_t k = 0; k < 7; ++k) {
+      // split into elements of bounded length (each triangle is a closed
+      // subpath of its own), which viewers need for large meshes
       internal::Svg_path_writer fill(os, std::string("fill=\"") + colour[k] + "\" stroke=\"none\"",
-                                     view.xmin, view.ymax, scale, decimals, false);
+                                     view.xmin, view.ymax, scale, decimals, true);
       for(std::size_t fi : bins[k]) {
         fill.move_to(pts[m.triangles[fi][0]]);
         fill.line_to(pts[m.triangles[fi][1]]);
@@ -1008,7 +1019,9 @@ void write_mesh(const std::string& file_name, const CDT& cdt)
       // </AppendedData> tag, so that XML parsers (meshio, for one) reject the
       // file, and dumps the bytes of the kernel's FT as if they were doubles,
       // which is garbage for any kernel but Epick.
-      boost::io::ios_all_saver saver(os);
+      // formatting and locale only: restoring the error state would hide a failed write
+      boost::io::ios_base_all_saver format_saver(os);
+      boost::io::ios_locale_saver locale_saver(os);
       internal::mesh_set_exact_format(os);
       CGAL::IO::write_VTU(os, cdt, CGAL::IO::ASCII);
     });

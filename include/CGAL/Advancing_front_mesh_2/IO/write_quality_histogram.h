@@ -13,6 +13,7 @@
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 
 #include <boost/io/ios_state.hpp>
 
@@ -38,7 +39,9 @@ caption.
 */
 inline void write_quality_histogram_SVG(std::ostream& os, const Mesh_quality& quality, const std::string& title = "")
 {
-  boost::io::ios_all_saver saver(os);
+  // formatting and locale only: restoring the error state would hide a failed write
+  boost::io::ios_base_all_saver format_saver(os);
+  boost::io::ios_locale_saver locale_saver(os);
   os.imbue(std::locale::classic());
   os << std::fixed << std::setprecision(1);
   const double panel_w = 420, panel_h = 220, left = 50, top = 40, gap = 70;
@@ -51,10 +54,7 @@ inline void write_quality_histogram_SVG(std::ostream& os, const Mesh_quality& qu
           << quality.mean_radius_ratio << ", min " << quality.min_radius_ratio << ", "
           << 100 * quality.share_above_0_9 << "% above 0.9; angles " << quality.min_angle_degrees << " to "
           << quality.max_angle_degrees << " degrees";
-  std::string escaped;
-  for(char c : (title.empty() ? std::string("Mesh quality") : title))
-    escaped += c == '&' ? std::string("&amp;") : c == '<' ? std::string("&lt;") : c == '>' ? std::string("&gt;")
-                                                                                        : std::string(1, c);
+  const std::string escaped = internal::svg_escape(title.empty() ? std::string("Mesh quality") : title);
   os << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\">" << escaped
      << "</text>\n<text x=\"" << left << "\" y=\"" << height - 12 << "\">" << caption.str() << "</text>\n";
 
