@@ -1,0 +1,206 @@
+// The mesher's own containers, each against a plain reference under random
+// operations: the id lists of the front, the flat hash map, the point
+// quadtree of the close-point search and the lifted circle octree (with
+// their merging of empty nodes). The mesher's tests exercise them too, but
+// a wrong answer there shows only as a bad mesh far from its cause.
+#include "afm_test_harness.h"
+
+#include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+namespace AFMI = CGAL::Advancing_front_mesh_2::internal;
+
+AFM_TEST_CASE(test_internal_compact_id_list)
+{
+  std::mt19937 rng(7);
+  std::vector<AFMI::Compact_id_list> lists(20);
+  std::vector<std::multiset<std::uint32_t> > ref(20);
+  for(int step = 0; step < 20000; ++step) {
+    const std::size_t i = rng() % lists.size();
+    if(ref[i].empty() || rng() % 2 == 0) {
+      // grow past the inline capacity now and then
+      if(ref[i].size() < 6) {
+        const std::uint32_t id = rng() % 5;
+        lists[i].push_back(id);
+        ref[i].insert(id);
+      }
+    } else {
+      auto it = ref[i].begin();
+      std::advance(it, rng() % ref[i].size());
+      lists[i].erase_value(*it);
+      ref[i].erase(it);
+    }
+    if(step % 97 == 0) {
+      // copies and moves keep the contents
+      AFMI::Compact_id_list copy(lists[i]);
+      AFMI::Compact_id_list moved(std::move(copy));
+      lists[i] = moved;
+    }
+    AFM_CHECK_MSG(lists[i].size() == ref[i].size(), "step " << step);
+    const std::multiset<std::uint32_t> got(lists[i].begin(), lists[i].end());
+    AFM_CHECK_MSG(got == ref[i], "step " << step);
+  }
+  // a vector of lists survives reallocation
+  for(int k = 0; k < 1000; ++k) {
+    lists.emplace_back();
+    lists.back().push_back(k);
+    lists.back().push_back(k + 1);
+    lists.back().push_back(k + 2);
+  }
+  for(int k = 0; k < 1000; ++k) {
+    const AFMI::Compact_id_list& l = lists[20 + k];
+    AFM_CHECK(l.size() == 3 && std::multiset<std::uint32_t>(l.begin(), l.end()) ==
+                                 std::multiset<std::uint32_t>({std::uint32_t(k), std::uint32_t(k + 1), std::uint32_t(k + 2)}));
+  }
+}
+
+AFM_TEST_CASE(test_internal_flat_hash_map)
+{
+  std::mt19937_64 rng(11);
+  const std::uint64_t empty = ~std::uint64_t(0);
+  AFMI::Flat_hash_map<std::uint64_t, int> map(empty);
+  std::unordered_map<std::uint64_t, int> ref;
+  for(int step = 0; step < 200000; ++step) {
+    // keys like the mesher's: pairs of small vertex ids, in a range that
+    // makes collisions and long probe runs common
+    const std::uint64_t k = ((rng() % 300) << 32) | (rng() % 300);
+    const int op = int(rng() % 3);
+    if(op == 0) {
+      if(ref.count(k) == 0) {
+        map.insert(k, step);
+        ref[k] = step;
+      }
+    } else if(op == 1) {
+      AFM_CHECK(map.erase(k) == (ref.erase(k) == 1));
+    } else {
+      const int* v = map.find(k);
+      auto it = ref.find(k);
+      AFM_CHECK_MSG((v == nullptr) == (it == ref.end()), "step " << step);
+      if(v != nullptr) AFM_CHECK(*v == it->second);
+    }
+    AFM_CHECK(map.size() == ref.size());
+  }
+  std::size_t seen = 0;
+  map.for_each([&](std::uint64_t k, int v) {
+    ++seen;
+    AFM_CHECK(ref.count(k) == 1 && ref[k] == v);
+  });
+  AFM_CHECK(seen == ref.size());
+}
+
+AFM_TEST_CASE(test_internal_point_quadtree)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coord(0, 1);
+  AFMI::Dynamic_point_quadtree tree;
+  tree.reset(0, 0, 1, 1, 4);
+  std::vector<std::array<double, 2> > pts(3000);
+  std::vector<bool> in(pts.size(), false);
+  for(auto& p : pts) p = {{coord(rng), coord(rng)}};
+  // a few points outside the root box go to the overflow list
+  pts[0] = {{-0.5, 0.5}};
+  pts[1] = {{1.5, 2.0}};
+  for(int round = 0; round < 6; ++round) {
+    // sweep like a front: insert a band, remove the band before it
+    for(std::size_t i = 0; i < pts.size(); ++i) {
+      const double band = pts[i][0] * 6;
+      if(band >= round && band < round + 1 && !in[i]) {
+        tree.insert(i, pts[i][0], pts[i][1]);
+        in[i] = true;
+      }
+      if(band < round && in[i] && rng() % 4 != 0) {
+        tree.remove(i);
+        in[i] = false;
+      }
+    }
+    for(int q = 0; q < 200; ++q) {
+      const double qx = coord(rng), qy = coord(rng), r = 0.2 * coord(rng);
+      std::vector<std::size_t> got;
+      tree.query(qx, qy, r, got);
+      std::sort(got.begin(), got.end());
+      AFM_CHECK_MSG(std::adjacent_find(got.begin(), got.end()) == got.end(), "duplicate report");
+      for(std::size_t i = 0; i < pts.size(); ++i) {
+        const double d = std::hypot(pts[i][0] - qx, pts[i][1] - qy);
+        const bool reported = std::binary_search(got.begin(), got.end(), i);
+        if(in[i] && d <= r) AFM_CHECK_MSG(reported, "round " << round << ": point " << i << " missed");
+        if(reported) AFM_CHECK_MSG(in[i] && d <= r * (1 + 1e-6) + 1e-9, "point " << i << " reported wrongly");
+      }
+    }
+    std::size_t count = 0;
+    for(bool b : in) count += b;
+    AFM_CHECK(tree.size() == count);
+  }
+  // empty quadrants merge back and their blocks are reused: the same
+  // points inserted again make the same tree, without new nodes
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    if(!in[i]) tree.insert(i, pts[i][0], pts[i][1]);
+  const std::size_t nodes = tree.number_of_nodes();
+  for(std::size_t i = 0; i < pts.size(); ++i) tree.remove(i);
+  AFM_CHECK(tree.size() == 0);
+  for(std::size_t i = 0; i < pts.size(); ++i) tree.insert(i, pts[i][0], pts[i][1]);
+  AFM_CHECK_MSG(tree.number_of_nodes() == nodes, "merged node blocks were not reused: " << nodes << " -> "
+                                                                                        << tree.number_of_nodes());
+}
+
+AFM_TEST_CASE(test_internal_lifted_circle_octree)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(0, 1);
+  AFMI::Lifted_circle_octree<int> tree;
+  tree.reset(-1, -1, 2, 2, 3, 4);
+  struct C { double x, y, r; bool in; std::size_t item; };
+  std::vector<C> circles(2500);
+  for(auto& c : circles) {
+    const double big = (rng() % 50 == 0) ? 1.0 : 0.03;
+    c = C{coord(rng), coord(rng), big * coord(rng), false, 0};
+  }
+  circles[0].r = 10; // outside the root box: the overflow list
+  for(int round = 0; round < 5; ++round) {
+    for(std::size_t i = 0; i < circles.size(); ++i) {
+      C& c = circles[i];
+      const double band = c.x * 5;
+      if(band >= round && band < round + 1 && !c.in) {
+        c.item = tree.insert(c.x, c.y, c.r, int(i));
+        c.in = true;
+      }
+      if(band < round && c.in && rng() % 3 != 0) {
+        tree.remove(c.item);
+        c.in = false;
+      }
+    }
+    for(int q = 0; q < 200; ++q) {
+      const double qx = coord(rng), qy = coord(rng), inflate = (q % 2) ? 0.05 * coord(rng) : 0.;
+      std::vector<int> got;
+      tree.query(qx, qy, inflate, [&got](int i) { got.push_back(i); });
+      std::sort(got.begin(), got.end());
+      for(std::size_t i = 0; i < circles.size(); ++i) {
+        const C& c = circles[i];
+        const bool reported = std::binary_search(got.begin(), got.end(), int(i));
+        const double d = std::hypot(c.x - qx, c.y - qy);
+        if(c.in && d < c.r + inflate) AFM_CHECK_MSG(reported, "round " << round << ": circle " << i << " missed");
+        if(reported) AFM_CHECK_MSG(c.in && d <= (c.r + inflate) * (1 + 1e-6) + 1e-9, "circle " << i << " reported wrongly");
+      }
+    }
+  }
+  for(C& c : circles)
+    if(!c.in) {
+      c.item = tree.insert(c.x, c.y, c.r, 0);
+      c.in = true;
+    }
+  const std::size_t nodes = tree.number_of_nodes();
+  for(C& c : circles) tree.remove(c.item);
+  AFM_CHECK(tree.size() == 0);
+  for(std::size_t i = 0; i < circles.size(); ++i) tree.insert(circles[i].x, circles[i].y, circles[i].r, int(i));
+  AFM_CHECK_MSG(tree.number_of_nodes() <= nodes, "merged node blocks were not reused: " << nodes << " -> "
+                                                                                        << tree.number_of_nodes());
+}
