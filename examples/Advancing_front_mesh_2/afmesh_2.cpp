@@ -324,7 +324,6 @@ int run(const Options& opt)
        << ", \"triangle_octree_queries\": " << st.triangle_octree_queries
        << ", \"edge_octree_queries\": " << st.edge_octree_queries
        << ", \"point_search_queries\": " << st.point_search_queries
-       << ", \"point_search_rebuilds\": " << st.point_search_rebuilds
        << ", \"incircle_tests\": " << st.incircle_tests
        << ", \"largest_front\": " << st.largest_front
        << ", \"largest_live_triangles\": " << st.largest_live_triangles

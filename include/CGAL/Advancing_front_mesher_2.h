@@ -16,7 +16,9 @@
 #include <CGAL/Advancing_front_mesh_2/Mesh_return_code.h>
 #include <CGAL/Advancing_front_mesh_2/Sizing_fields.h>
 #include <CGAL/Advancing_front_mesh_2/Statistics.h>
-#include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_index.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_predicates.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h>
 
@@ -26,13 +28,13 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
-#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <list>
 #include <queue>
@@ -128,23 +130,36 @@ private:
 
   struct Queue_entry
   {
+    Queue_entry(double len, Edge_key k, std::uint32_t v) : length(len), key(k), version(v) {}
     double length;
     Edge_key key;
     std::uint32_t version;
     bool operator<(const Queue_entry& o) const
     {
       // std::priority_queue is a max-heap: invert to pop the shortest edge;
-      // ties broken by key so that runs are deterministic
+      // ties broken by age (versions grow with creation), which does not
+      // depend on the reuse of vertex ids, so that runs are deterministic
       if(length != o.length) return length > o.length;
-      return key > o.key;
+      return version > o.version;
     }
+  };
+
+  // A front edge near the neighbourhood's disk, with its end points'
+  // coordinates copied once, so that the many box tests of the visibility
+  // checks read them from one small array.
+  struct Near_edge
+  {
+    Edge_key key;
+    double x0, y0, x1, y1;
   };
 
   struct Neighbourhood
   {
     double cx = 0, cy = 0, radius = 0;
-    std::vector<std::size_t> vertices;
-    std::vector<Edge_key> edges;
+    std::vector<std::size_t> vertices;           // active vertices in the disk
+    std::vector<std::array<double, 2> > vertex_xy; // their coordinates, in the same order
+    std::vector<Near_edge> edges;                // front edges meeting the disk when gathered
+    std::vector<Edge_key> new_edges;             // front edges created since
   };
 
   struct Circle
@@ -154,6 +169,9 @@ private:
 
   typedef Advancing_front_mesh_2::internal::Lifted_circle_octree<Face_handle> Triangle_octree;
   typedef Advancing_front_mesh_2::internal::Lifted_circle_octree<Edge_key> Edge_octree;
+  // an input constraint, by its end vertices (which may become inactive)
+  typedef std::pair<Vertex_handle, Vertex_handle> Constraint;
+  typedef Advancing_front_mesh_2::internal::Lifted_circle_octree<Constraint> Constraint_octree;
 
 public:
   /// \name Creation
@@ -209,6 +227,10 @@ public:
   /// Stops after `seconds` seconds of meshing (0: no limit).
   void set_time_limit(double seconds) { time_limit_ = seconds; }
 
+  /// Measures the time of each phase into `statistics().phase_times`
+  /// (off by default: it reads the clock at every phase change).
+  void set_phase_timing(bool on) { phase_timing_ = on; }
+
   /// @}
 
   /// \name Meshing
@@ -226,6 +248,10 @@ public:
   {
     if(!initialized_) init();
     const auto start = std::chrono::steady_clock::now();
+    // initialisation is timed separately (init_time)
+    phase_seconds_.fill(0);
+    phase_start_ = Clock::now();
+    phase_ = FRONT_SELECTION;
     Advancing_front_mesh_2::Mesh_return_code rc = Advancing_front_mesh_2::MESH_COMPLETE;
     std::size_t steps = 0;
     while(!queue_.empty()) {
@@ -250,6 +276,8 @@ public:
     }
     if(rc != Advancing_front_mesh_2::MESH_COMPLETE) close_remaining_front();
     finish();
+    enter_phase(FRONT_SELECTION);
+    store_phase_times();
     stats_.meshing_time += seconds_since(start);
     return rc;
   }
@@ -326,10 +354,10 @@ public:
     for(Vid v = 0; v < out_.size(); ++v) {
       if(out_[v].size() != in_[v].size()) return false;
       for(Vid w : out_[v]) {
-        auto it = front_.find(key(v, w));
-        if(it == front_.end()) return false;
+        const Front_edge* it = front_.find(key(v, w));
+        if(it == nullptr) return false;
         if(std::find(in_[w].begin(), in_[w].end(), v) == in_[w].end()) return false;
-        const Front_edge& fe = it->second;
+        const Front_edge& fe = *it;
         if(fe.behind != Face_handle()) {
           const int i = fe.behind_index;
           if(fe.behind->vertex(cw(i)) != vertex_[v] || fe.behind->vertex(ccw(i)) != vertex_[w])
@@ -345,12 +373,67 @@ public:
   /// @}
 
 private:
+  // ------------------------------------------------------- phase timing
+  enum Phase { FRONT_SELECTION, CLOSE_POINT_SEARCH, DELAUNAY_CLOSURE, PLACEMENT, CIRCLE_OCTREE,
+               CAVITY, VISIBILITY, FRONT_UPDATE, OUTPUT };
+  typedef std::chrono::steady_clock Clock;
+
+  // Charges the time since the last phase change to the current phase and
+  // makes `p` current; returns the phase it replaces.
+  Phase enter_phase(Phase p) const
+  {
+    const Phase previous = phase_;
+    if(phase_timing_) {
+      const Clock::time_point now = Clock::now();
+      phase_seconds_[previous] += std::chrono::duration<double>(now - phase_start_).count();
+      phase_start_ = now;
+    }
+    phase_ = p;
+    return previous;
+  }
+
+  // The phase of a scope; the enclosing phase resumes when it ends.
+  class Phase_scope
+  {
+  public:
+    Phase_scope(const Advancing_front_mesher_2* m, Phase p) : m_(m), previous_(m->enter_phase(p)) {}
+    ~Phase_scope() { m_->enter_phase(previous_); }
+    Phase_scope(const Phase_scope&) = delete;
+    Phase_scope& operator=(const Phase_scope&) = delete;
+  private:
+    const Advancing_front_mesher_2* m_;
+    Phase previous_;
+  };
+
+  void store_phase_times()
+  {
+    Advancing_front_mesh_2::Phase_times& t = stats_.phase_times;
+    t.front_selection = phase_seconds_[FRONT_SELECTION];
+    t.close_point_search = phase_seconds_[CLOSE_POINT_SEARCH];
+    t.delaunay_closure = phase_seconds_[DELAUNAY_CLOSURE];
+    t.placement = phase_seconds_[PLACEMENT];
+    t.circle_octree = phase_seconds_[CIRCLE_OCTREE];
+    t.cavity = phase_seconds_[CAVITY];
+    t.visibility = phase_seconds_[VISIBILITY];
+    t.front_update = phase_seconds_[FRONT_UPDATE];
+    t.output = phase_seconds_[OUTPUT];
+  }
+
   // ---------------------------------------------------------------- basics
   static int ccw(int i) { return (i + 1) % 3; }
   static int cw(int i) { return (i + 2) % 3; }
   static Edge_key key(Vid u, Vid v) { return (Edge_key(u) << 32) | Edge_key(v); }
   static Vid source(Edge_key k) { return Vid(k >> 32); }
   static Vid target(Edge_key k) { return Vid(k & 0xffffffffu); }
+
+  // std::hypot without its cost where the plain formula cannot overflow or
+  // underflow (hypot was 4% of the meshing time)
+  static double length(double dx, double dy)
+  {
+    const double s = dx * dx + dy * dy;
+    if(s > 1e-280 && s < 1e280) return std::sqrt(s);
+    return std::hypot(dx, dy);
+  }
 
   template <class T>
   static double seconds_since(const T& start)
@@ -370,46 +453,78 @@ private:
     in_.clear();
     vertex_.clear();
     xy_.clear();
-    tri_count_.clear();
     vid_.clear();
+    free_ids_.clear();
+    released_ids_.clear();
     face_records_.clear();
     queue_ = std::priority_queue<Queue_entry>();
     index_.clear();
     stats_ = Advancing_front_mesh_2::Statistics();
+    phase_seconds_.fill(0);
+    phase_start_ = Clock::now();
     meshed_area_ = 0;
     domain_area_ = 0;
   }
 
-  Vid add_vertex(Vertex_handle vh)
+  // ------------------------------------------------------ vertex records
+  // Only the active vertices have a record: an id, their coordinates, their
+  // front edges and a place in the point quadtree. A vertex is active while
+  // it has front edges, or while no triangle touches it (a free point, or
+  // a vertex whose triangles were all removed by a cavity). Behind the front
+  // a vertex needs nothing, so its record is released and its id reused:
+  // the records and the lookup of ids by vertex hold O(front) memory
+  // instead of O(mesh), which was 60 bytes per triangle at 1M triangles.
+  //
+  // No triangle count is needed to tell the two kinds of vertices without
+  // front edges apart: a vertex that loses its last front edge to a new
+  // triangle belongs to that triangle (behind the front), and one that
+  // loses it to a removed triangle keeps no triangle at all (a removed
+  // triangle's edges at a vertex either become front edges, when a
+  // triangle lies beyond them, or vanish, when the vertex's fan was that
+  // triangle alone).
+
+  // The id of a vertex, which becomes active if it was not.
+  Vid acquire(Vertex_handle vh)
   {
-    const Vid id = static_cast<Vid>(vertex_.size());
-    if(vertex_.size() >= std::size_t(no_vertex) - 1)
-      throw std::length_error("Advancing_front_mesher_2: too many vertices");
-    vertex_.push_back(vh);
-    xy_.push_back({{CGAL::to_double(vh->point().x()), CGAL::to_double(vh->point().y())}});
-    out_.emplace_back();
-    in_.emplace_back();
-    tri_count_.push_back(0);
-    vid_.emplace(vh, id);
+    if(const Vid* known = vid_.find(&*vh)) return *known;
+    const std::array<double, 2> xy = {{CGAL::to_double(vh->point().x()), CGAL::to_double(vh->point().y())}};
+    Vid id;
+    if(!free_ids_.empty()) {
+      id = free_ids_.back();
+      free_ids_.pop_back();
+      vertex_[id] = vh;
+      xy_[id] = xy;
+      CGAL_assertion(out_[id].empty() && in_[id].empty());
+    } else {
+      if(vertex_.size() >= std::size_t(no_vertex) - 1)
+        throw std::length_error("Advancing_front_mesher_2: too many active vertices");
+      id = static_cast<Vid>(vertex_.size());
+      vertex_.push_back(vh);
+      xy_.push_back(xy);
+      out_.emplace_back();
+      in_.emplace_back();
+    }
+    vid_.insert(&*vh, id);
+    index_.insert(id, xy[0], xy[1]);
+    stats_.largest_active_vertices = (std::max)(stats_.largest_active_vertices, vid_.size());
     return id;
   }
 
-  Vid id_of(Vertex_handle vh) const
+  // Releases the record of a vertex that now lies behind the front. Its id
+  // is reused from the next step on, not before: ids gathered in this step
+  // (the neighbourhood, the cavity) must keep naming the same vertex.
+  void release(Vid v)
   {
-    auto it = vid_.find(vh);
-    CGAL_assertion(it != vid_.end());
-    return it->second;
+    CGAL_precondition(out_[v].empty() && in_[v].empty());
+    index_.remove(v);
+    vid_.erase(&*vertex_[v]);
+    released_ids_.push_back(v);
   }
 
-  // A vertex is active (searchable as a close point) while it has front
-  // edges, or while no triangle touches it yet (a free point or a vertex
-  // whose triangles were all removed by a cavity).
-  void update_vertex_state(Vid v)
+  void recycle_released_ids()
   {
-    if(!out_[v].empty() || !in_[v].empty() || tri_count_[v] == 0)
-      index_.insert(v, x(v), y(v));
-    else
-      index_.remove(v);
+    free_ids_.insert(free_ids_.end(), released_ids_.begin(), released_ids_.end());
+    released_ids_.clear();
   }
 
   static Circle circle_of(double ax, double ay, double bx, double by, double cx, double cy)
@@ -425,7 +540,7 @@ private:
     const double d = 2 * (bax * cay - bay * cax);
     const double b2 = bax * bax + bay * bay, c2 = cax * cax + cay * cay;
     const double ux = (cay * b2 - bay * c2) / d, uy = (bax * c2 - cax * b2) / d;
-    return Circle{ax + ux * scale, ay + uy * scale, std::hypot(ux, uy) * scale};
+    return Circle{ax + ux * scale, ay + uy * scale, length(ux, uy) * scale};
   }
 
   Circle circle_of(Vid a, Vid b, Vid c) const
@@ -433,13 +548,18 @@ private:
     return circle_of(x(a), y(a), x(b), y(b), x(c), y(c));
   }
 
+  // the face's vertices need not be active: their coordinates are read
+  // through the face
   Circle circle_of(Face_handle f) const
   {
-    return circle_of(id_of(f->vertex(0)), id_of(f->vertex(1)), id_of(f->vertex(2)));
+    auto X = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().x()); };
+    auto Y = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().y()); };
+    return circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2));
   }
 
   double target_circumradius(double mx, double my)
   {
+    Phase_scope phase(this, FRONT_SELECTION);
     const FT h = sizing_(Point(mx, my));
     const double hd = CGAL::to_double(h);
     if(!(hd > 0) || !std::isfinite(hd)) {
@@ -453,9 +573,12 @@ private:
   }
 
   // ------------------------------------------------------------ the front
-  void add_front_edge(Vid u, Vid v, Face_handle behind, int behind_index, bool constrained)
+  // `apex`, when known, is the vertex of `behind` opposite the edge: it
+  // spares the lookups of the face's vertex ids.
+  void add_front_edge(Vid u, Vid v, Face_handle behind, int behind_index, bool constrained,
+                      Vid apex = no_vertex)
   {
-    CGAL_assertion(front_.find(key(u, v)) == front_.end());
+    CGAL_assertion(!front_.contains(key(u, v)));
     Front_edge fe;
     fe.behind = behind;
     fe.behind_index = behind_index;
@@ -463,53 +586,74 @@ private:
     fe.version = ++version_counter_;
     const double mx = 0.5 * (x(u) + x(v)), my = 0.5 * (y(u) + y(v));
     const double dx = x(v) - x(u), dy = y(v) - y(u);
-    const double len = std::hypot(dx, dy);
-    fe.circle_item = edge_octree_.insert(mx, my, 0.5 * len, key(u, v));
-    front_.emplace(key(u, v), fe);
+    const double len = length(dx, dy);
+    {
+      Phase_scope phase(this, CIRCLE_OCTREE);
+      fe.circle_item = edge_octree_.insert(mx, my, 0.5 * len, key(u, v));
+    }
+    front_.insert(key(u, v), fe);
+    nbh_.new_edges.push_back(key(u, v));
     out_[u].push_back(v);
     in_[v].push_back(u);
-    if(behind != Face_handle() && behind->is_in_domain()) add_front_edge_to_face(behind);
+    if(behind != Face_handle() && behind->is_in_domain()) add_front_edge_to_face(behind, v, apex, u);
     queue_.push(Queue_entry{len, key(u, v), fe.version});
+    if(queue_.size() > 2 * front_.size() + 1024) compact_queue();
     stats_.largest_front = (std::max)(stats_.largest_front, front_.size());
-    update_vertex_state(u);
-    update_vertex_state(v);
+  }
+
+  // The queue keeps an entry of every front edge until it is popped, also
+  // of those closed before their turn (it cannot erase): rebuilt from the
+  // front when those are the majority, it holds O(front) entries instead of
+  // 15 bytes per triangle of the mesh.
+  void compact_queue()
+  {
+    std::vector<Queue_entry> live;
+    live.reserve(front_.size());
+    front_.for_each([this, &live](Edge_key k, const Front_edge& fe) {
+      const Vid u = source(k), v = target(k);
+      live.push_back(Queue_entry{length(x(v) - x(u), y(v) - y(u)), k, fe.version});
+    });
+    queue_ = std::priority_queue<Queue_entry>(std::less<Queue_entry>(), std::move(live));
   }
 
   void remove_front_edge(Vid u, Vid v)
   {
-    auto it = front_.find(key(u, v));
-    CGAL_assertion(it != front_.end());
-    const Front_edge fe = it->second;
-    front_.erase(it);
-    edge_octree_.remove(fe.circle_item);
-    out_[u].erase(std::find(out_[u].begin(), out_[u].end(), v));
-    in_[v].erase(std::find(in_[v].begin(), in_[v].end(), u));
+    const Front_edge* it = front_.find(key(u, v));
+    CGAL_assertion(it != nullptr);
+    const Front_edge fe = *it;
+    front_.erase(key(u, v));
+    {
+      Phase_scope phase(this, CIRCLE_OCTREE);
+      edge_octree_.remove(fe.circle_item);
+    }
+    out_[u].erase_value(v);
+    in_[v].erase_value(u);
     if(fe.behind != Face_handle() && fe.behind->is_in_domain()) remove_front_edge_from_face(fe.behind);
-    update_vertex_state(u);
-    update_vertex_state(v);
   }
 
   // A face enters the circle octree with its first front edge and leaves
   // it with its last: the octree holds exactly the front triangles.
-  void add_front_edge_to_face(Face_handle f)
+  void add_front_edge_to_face(Face_handle f, Vid a = no_vertex, Vid b = no_vertex, Vid c_ = no_vertex)
   {
-    auto it = face_records_.find(f);
-    if(it != face_records_.end()) {
-      ++it->second.front_edges;
+    Face_record* it = face_records_.find(&*f);
+    if(it != nullptr) {
+      ++it->front_edges;
       return;
     }
-    const Circle c = circle_of(f);
-    face_records_.emplace(f, Face_record{triangle_octree_.insert(c.cx, c.cy, c.r, f), 1});
+    Phase_scope phase(this, CIRCLE_OCTREE);
+    const Circle c = (a != no_vertex && b != no_vertex && c_ != no_vertex) ? circle_of(a, b, c_) : circle_of(f);
+    face_records_.insert(&*f, Face_record{triangle_octree_.insert(c.cx, c.cy, c.r, f), 1});
     stats_.largest_live_triangles = (std::max)(stats_.largest_live_triangles, face_records_.size());
   }
 
   void remove_front_edge_from_face(Face_handle f)
   {
-    auto it = face_records_.find(f);
-    CGAL_assertion(it != face_records_.end());
-    if(--it->second.front_edges == 0) {
-      triangle_octree_.remove(it->second.circle_item);
-      face_records_.erase(it);
+    Face_record* it = face_records_.find(&*f);
+    CGAL_assertion(it != nullptr);
+    if(--it->front_edges == 0) {
+      Phase_scope phase(this, CIRCLE_OCTREE);
+      triangle_octree_.remove(it->circle_item);
+      face_records_.erase(&*f);
     }
   }
 
@@ -522,12 +666,9 @@ private:
       if(!f->is_in_domain()) continue;
       domain_faces.push_back(f);
       for(int i = 0; i < 3; ++i) {
-        Vertex_handle vh = f->vertex(i);
-        if(vid_.find(vh) == vid_.end()) {
-          const Vid id = add_vertex(vh);
-          xmin = (std::min)(xmin, x(id)); xmax = (std::max)(xmax, x(id));
-          ymin = (std::min)(ymin, y(id)); ymax = (std::max)(ymax, y(id));
-        }
+        const double vx = CGAL::to_double(f->vertex(i)->point().x()), vy = CGAL::to_double(f->vertex(i)->point().y());
+        xmin = (std::min)(xmin, vx); xmax = (std::max)(xmax, vx);
+        ymin = (std::min)(ymin, vy); ymax = (std::max)(ymax, vy);
       }
     }
     if(domain_faces.empty()) {
@@ -538,7 +679,11 @@ private:
     // near the domain; generous padding keeps the overflow list short.
     const double span = (std::max)(xmax - xmin, ymax - ymin);
     triangle_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span);
+    index_.reset(xmin, ymin, xmax, ymax);
     edge_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span);
+    // every vertex of the domain starts active: on the front, or free
+    for(Face_handle f : domain_faces)
+      for(int i = 0; i < 3; ++i) acquire(f->vertex(i));
 
     struct Pending { Vid u, v; Face_handle behind; int index; bool constrained; };
     std::vector<Pending> pending;
@@ -547,7 +692,7 @@ private:
       for(int i = 0; i < 3; ++i) {
         Face_handle g = f->neighbor(i);
         // edge i of f, directed with f (soon unmeshed) on its left
-        const Vid u = id_of(f->vertex(ccw(i))), v = id_of(f->vertex(cw(i)));
+        const Vid u = acquire(f->vertex(ccw(i))), v = acquire(f->vertex(cw(i)));
         if(!g->is_in_domain()) {
           // the boundary of the domain: the mesh marking guarantees it is constrained
           CGAL_assertion(f->is_constrained(i));
@@ -572,10 +717,9 @@ private:
       if(p.u > p.v && p.behind == Face_handle()) continue; // interior constraint: once
       const double dx = x(p.v) - x(p.u), dy = y(p.v) - y(p.u);
       constraint_octree_.insert(0.5 * (x(p.u) + x(p.v)), 0.5 * (y(p.u) + y(p.v)),
-                                0.5 * std::hypot(dx, dy), key(p.u, p.v));
+                                0.5 * length(dx, dy), std::make_pair(vertex_[p.u], vertex_[p.v]));
     }
     for(const Pending& p : pending) add_front_edge(p.u, p.v, p.behind, p.index, p.constrained);
-    for(Vid v = 0; v < vertex_.size(); ++v) update_vertex_state(v);
     if(front_.empty()) finished_ = true;
   }
 
@@ -595,15 +739,16 @@ private:
   Face_handle make_triangle(Vid a, Vid b, Vid c, std::vector<Edge_key>* created = nullptr)
   {
     CGAL_precondition(pred_.orientation(pt(a), pt(b), pt(c)) == LEFT_TURN);
+    Phase_scope phase(this, FRONT_UPDATE);
     Face_handle f = tds().create_face(vertex_[a], vertex_[b], vertex_[c]);
     f->set_in_domain(true);
     const std::array<Vid, 3> vs = {{a, b, c}};
     for(int k = 0; k < 3; ++k) {
       // edge k of f is opposite vertex k, directed vs[k+1] -> vs[k+2] with f on its left
       const Vid s = vs[ccw(k)], t = vs[cw(k)];
-      auto it = front_.find(key(s, t));
-      if(it != front_.end()) {
-        const Front_edge fe = it->second;
+      const Front_edge* it = front_.find(key(s, t));
+      if(it != nullptr) {
+        const Front_edge fe = *it;
         f->set_constraint(k, fe.constrained);
         if(fe.behind != Face_handle()) {
           f->set_neighbor(k, fe.behind);
@@ -611,10 +756,10 @@ private:
         } else {
           f->set_neighbor(k, Face_handle());
           // a virgin side of a constraint: the other side now faces f
-          auto rev = front_.find(key(t, s));
-          if(rev != front_.end()) {
-            rev->second.behind = f;
-            rev->second.behind_index = k;
+          Front_edge* rev = front_.find(key(t, s));
+          if(rev != nullptr) {
+            rev->behind = f;
+            rev->behind_index = k;
             add_front_edge_to_face(f);
           }
         }
@@ -622,14 +767,14 @@ private:
       } else {
         f->set_constraint(k, false);
         f->set_neighbor(k, Face_handle());
-        add_front_edge(t, s, f, k, false);
+        add_front_edge(t, s, f, k, false, vs[k]);
         if(created) created->push_back(key(t, s));
       }
     }
     for(Vid v : vs) {
       vertex_[v]->set_face(f);
-      ++tri_count_[v];
-      update_vertex_state(v);
+      // a vertex left without front edges now lies behind the front
+      if(out_[v].empty() && in_[v].empty()) release(v);
     }
     meshed_area_ += std::abs(triangle_area(f));
     visitor_.on_face_created(f);
@@ -642,20 +787,21 @@ private:
   // front edges on both sides.
   void remove_triangle(Face_handle f, std::vector<Edge_key>* created)
   {
+    Phase_scope phase(this, FRONT_UPDATE);
     visitor_.on_face_removed(f);
     std::array<Vid, 3> vs;
-    for(int k = 0; k < 3; ++k) vs[k] = id_of(f->vertex(k));
+    for(int k = 0; k < 3; ++k) vs[k] = acquire(f->vertex(k));
     for(int k = 0; k < 3; ++k) {
       const Vid s = vs[ccw(k)], t = vs[cw(k)];
       Face_handle g = f->neighbor(k);
       const bool constrained = f->is_constrained(k);
       if(g == Face_handle()) {
         // the unmeshed region is beyond: front edge t -> s has f behind it
-        CGAL_assertion(front_.find(key(t, s)) != front_.end());
+        CGAL_assertion(front_.contains(key(t, s)));
         if(constrained) {
-          auto rev = front_.find(key(t, s));
-          rev->second.behind = Face_handle();
-          rev->second.behind_index = -1;
+          Front_edge* rev = front_.find(key(t, s));
+          rev->behind = Face_handle();
+          rev->behind_index = -1;
           remove_front_edge_from_face(f);
           add_front_edge(s, t, Face_handle(), -1, true);
           if(created) created->push_back(key(s, t));
@@ -671,10 +817,8 @@ private:
     }
     meshed_area_ -= std::abs(triangle_area(f));
     tds().delete_face(f);
-    for(Vid v : vs) {
-      --tri_count_[v];
-      update_vertex_state(v);
-    }
+    // a vertex left without front edges has no triangle left either: it
+    // stays active, as a free point
     ++stats_.triangles_removed;
   }
 
@@ -685,10 +829,22 @@ private:
     n.cy = cy;
     n.radius = radius;
     n.vertices.clear();
+    n.vertex_xy.clear();
     n.edges.clear();
-    index_.query(cx, cy, radius, n.vertices);
+    n.new_edges.clear();
+    {
+      Phase_scope phase(this, CLOSE_POINT_SEARCH);
+      index_.query(cx, cy, radius, [&n](std::size_t id, double px, double py) {
+        n.vertices.push_back(id);
+        n.vertex_xy.push_back({{px, py}});
+      });
+    }
     ++stats_.point_search_queries;
-    edge_octree_.query(cx, cy, radius, [&n](Edge_key k) { n.edges.push_back(k); });
+    Phase_scope phase(this, CIRCLE_OCTREE);
+    edge_octree_.query(cx, cy, radius, [this, &n](Edge_key k) {
+      const Vid g = source(k), h = target(k);
+      n.edges.push_back(Near_edge{k, x(g), y(g), x(h), y(h)});
+    });
     ++stats_.edge_octree_queries;
   }
 
@@ -725,24 +881,66 @@ private:
     return pred_.closed_segments_meet(ps, pt_, pt(g), pt(h));
   }
 
-  // Is the open segment s-t inside the unmeshed region: leaving s and t
-  // into free sectors, crossing no front edge and passing through no
-  // vertex? Complete when the segment lies in the neighbourhood's disk.
-  bool visible(Vid s, const Point& ps, Vid t, const Point& pt_, const Neighbourhood& n) const
+  // A segment's bounding box in doubles, padded by more than the rounding
+  // of the coordinates: most front edges and vertices of a neighbourhood are
+  // far from a segment, and this test skips their exact tests.
+  struct Segment_box
   {
-    if(s != no_vertex && !in_free_sector(s, pt_, t)) return false;
-    if(t != no_vertex && !in_free_sector(t, ps, s)) return false;
-    for(Edge_key k : n.edges) {
-      if(front_.find(k) == front_.end()) continue;
-      if(edge_blocks(source(k), target(k), s, ps, t, pt_)) return false;
+    double x0, y0, x1, y1;
+
+    Segment_box(const Point& ps, const Point& pt_)
+    {
+      const double sx = CGAL::to_double(ps.x()), sy = CGAL::to_double(ps.y());
+      const double tx = CGAL::to_double(pt_.x()), ty = CGAL::to_double(pt_.y());
+      const double pad = 1e-14 * (std::max)({std::abs(sx), std::abs(sy), std::abs(tx), std::abs(ty)});
+      x0 = (std::min)(sx, tx) - pad; x1 = (std::max)(sx, tx) + pad;
+      y0 = (std::min)(sy, ty) - pad; y1 = (std::max)(sy, ty) + pad;
     }
-    for(std::size_t z : n.vertices) {
-      if(z == s || z == t) continue;
-      if(pred_.in_open_segment(ps, pt_, pt(Vid(z)))) return false;
-      // edges created after the neighbourhood was gathered all have an end
-      // point in it, so the adjacency lists cover them
-      for(Vid w : out_[z])
-        if(edge_blocks(Vid(z), w, s, ps, t, pt_)) return false;
+
+    // the box of the segment (or point) g-h does not meet this one
+    bool apart(double gx, double gy, double hx, double hy) const
+    {
+      const double gpad = 1e-14 * (std::max)({std::abs(gx), std::abs(gy), std::abs(hx), std::abs(hy)});
+      return (std::max)(gx, hx) + gpad < x0 || (std::min)(gx, hx) - gpad > x1 ||
+             (std::max)(gy, hy) + gpad < y0 || (std::min)(gy, hy) - gpad > y1;
+    }
+  };
+
+  // Are the open segments s1-t and s2-t inside the unmeshed region: leaving
+  // their end points into free sectors, crossing no front edge and passing
+  // through no vertex? (s1, s2, t are vertex ids, or no_vertex for the new
+  // point.) Complete when the segments lie in the neighbourhood's disk. Both
+  // segments are tested in one pass over the neighbourhood: the callers
+  // always need both (an apex seen from a and b, a new point seen from a and
+  // b).
+  bool visible_from_both(Vid s1, const Point& ps1, Vid s2, const Point& ps2, Vid t, const Point& pt_,
+                         const Neighbourhood& n) const
+  {
+    Phase_scope phase(this, VISIBILITY);
+    if(s1 != no_vertex && !in_free_sector(s1, pt_, t)) return false;
+    if(t != no_vertex && !in_free_sector(t, ps1, s1)) return false;
+    if(s2 != no_vertex && !in_free_sector(s2, pt_, t)) return false;
+    if(t != no_vertex && !in_free_sector(t, ps2, s2)) return false;
+    const Segment_box box1(ps1, pt_), box2(ps2, pt_);
+    // every front edge that can block: those near the disk when it was
+    // gathered, and those created since
+    auto blocks = [&](Vid g, Vid h, double gx, double gy, double hx, double hy, Edge_key k) {
+      const bool near1 = !box1.apart(gx, gy, hx, hy), near2 = !box2.apart(gx, gy, hx, hy);
+      if(!(near1 || near2) || !front_.contains(k)) return false;
+      return (near1 && edge_blocks(g, h, s1, ps1, t, pt_)) || (near2 && edge_blocks(g, h, s2, ps2, t, pt_));
+    };
+    for(const Near_edge& e : n.edges)
+      if(blocks(source(e.key), target(e.key), e.x0, e.y0, e.x1, e.y1, e.key)) return false;
+    for(Edge_key k : n.new_edges) {
+      const Vid g = source(k), h = target(k);
+      if(blocks(g, h, x(g), y(g), x(h), y(h), k)) return false;
+    }
+    for(std::size_t i = 0; i < n.vertices.size(); ++i) {
+      const std::size_t z = n.vertices[i];
+      if(z == t) continue;
+      const double zx = n.vertex_xy[i][0], zy = n.vertex_xy[i][1];
+      if(z != s1 && !box1.apart(zx, zy, zx, zy) && pred_.in_open_segment(ps1, pt_, pt(Vid(z)))) return false;
+      if(z != s2 && !box2.apart(zx, zy, zx, zy) && pred_.in_open_segment(ps2, pt_, pt(Vid(z)))) return false;
     }
     return true;
   }
@@ -750,47 +948,99 @@ private:
   // Step 5, Merriam's iteration: the Delaunay apex of front edge a -> b
   // among the neighbourhood's vertices visible from both end points, i.e.
   // the candidate whose circle through a and b contains no other candidate.
-  Vid delaunay_apex(Vid a, Vid b, const Neighbourhood& n)
+  //
+  // When the caller has no use for an apex whose circle's centre lies at
+  // `max_centre_height` or more above the edge (such a triangle is too
+  // large to be built, and the new point would lie inside its circle), the
+  // candidates beyond that height are dropped before their costly tests;
+  // since they lie outside the circles of all lower candidates, the answer
+  // among the others is unchanged, and no_vertex means "no apex below".
+  Vid delaunay_apex(Vid a, Vid b, const Neighbourhood& n,
+                    double max_centre_height = std::numeric_limits<double>::infinity())
   {
+    Phase_scope phase(this, DELAUNAY_CLOSURE);
     const Point& pa = pt(a);
     const Point& pb = pt(b);
+    // Candidates are taken in the order of their circles' approximate
+    // centre heights over the edge: the Delaunay apex is then nearly always
+    // the first candidate that qualifies, so the costly free-sector tests run
+    // for few candidates. The exact in-circle iteration decides; the order
+    // only saves work.
+    const double mx = 0.5 * (x(a) + x(b)), my = 0.5 * (y(a) + y(b));
+    const double tx = x(b) - x(a), ty = y(b) - y(a);
+    const double quarter_l2 = 0.25 * (tx * tx + ty * ty);
+    // heights below are centre heights in units of half the edge length; the
+    // cut-off is padded by far more than their rounding errors, which grow
+    // with the coordinates' magnitude over the edge length
+    const double half_length = std::sqrt(quarter_l2);
+    const double rounding = 1e-12 * (std::abs(mx) + std::abs(my)) / half_length;
+    const double cutoff = max_centre_height / half_length;
     candidates_.clear();
     for(std::size_t z : n.vertices) {
       const Vid c = Vid(z);
       if(c == a || c == b) continue;
-      const Point& pc = pt(c);
-      if(pred_.orientation(pa, pb, pc) != LEFT_TURN) continue;
-      if(!in_free_sector(a, pc, c) || !in_free_sector(b, pc, c)) continue;
-      if(!in_free_sector(c, pa, a) || !in_free_sector(c, pb, b)) continue;
-      candidates_.push_back(c);
+      if(pred_.orientation(pa, pb, pt(c)) != LEFT_TURN) continue;
+      // with the edge's length as unit: the circle through a, b and c has
+      // its centre at this height over the midpoint (times |ab|)
+      const double dx = x(c) - mx, dy = y(c) - my;
+      const double u = dx * tx + dy * ty, v = dy * tx - dx * ty;
+      const double along2 = quarter_l2 > 0 ? u * u / (4 * quarter_l2) : 0;
+      const double height = v > 0 ? (along2 + v * v / (4 * quarter_l2) - quarter_l2) / v : 0;
+      if(std::isfinite(height) && height > cutoff + 1e-6 + rounding * (1 + std::abs(height))) continue;
+      candidates_.push_back(Candidate{std::isfinite(height) ? height : 0., c, UNTESTED});
     }
-    while(!candidates_.empty()) {
-      std::size_t best = 0;
-      for(std::size_t i = 1; i < candidates_.size(); ++i) {
-        ++stats_.incircle_tests;
-        if(pred_.strictly_inside_circle(pa, pb, pt(candidates_[best]), pt(candidates_[i]))) best = i;
+    std::sort(candidates_.begin(), candidates_.end(),
+              [](const Candidate& p, const Candidate& q) { return p.height < q.height; });
+    auto qualifies = [&](Candidate& cand) {
+      if(cand.state == UNTESTED) {
+        const Vid c = cand.vertex;
+        const Point& pc = pt(c);
+        const bool ok = in_free_sector(a, pc, c) && in_free_sector(b, pc, c) && in_free_sector(c, pa, a) &&
+                        in_free_sector(c, pb, b);
+        cand.state = ok ? QUALIFIES : REJECTED;
       }
-      const Vid c = candidates_[best];
-      if(visible(a, pa, c, pt(c), n) && visible(b, pb, c, pt(c), n)) return c;
-      candidates_.erase(candidates_.begin() + best);
+      return cand.state == QUALIFIES;
+    };
+    for(;;) {
+      // Merriam's iteration over the qualifying candidates: the one whose
+      // circle through a and b holds no other
+      std::size_t best = candidates_.size();
+      for(std::size_t i = 0; i < candidates_.size(); ++i) {
+        Candidate& cand = candidates_[i];
+        if(cand.state == REJECTED) continue;
+        if(best == candidates_.size()) {
+          if(qualifies(cand)) best = i;
+          continue;
+        }
+        ++stats_.incircle_tests;
+        if(pred_.strictly_inside_circle(pa, pb, pt(candidates_[best].vertex), pt(cand.vertex)) && qualifies(cand))
+          best = i;
+      }
+      if(best == candidates_.size()) return no_vertex;
+      const Vid c = candidates_[best].vertex;
+      if(visible_from_both(a, pa, b, pb, c, pt(c), n)) return c;
+      candidates_[best].state = REJECTED;
     }
-    return no_vertex;
   }
 
   // ------------------------------------------------------------- one step
   bool step()
   {
+    recycle_released_ids();
     while(!queue_.empty()) {
       const Queue_entry e = queue_.top();
       queue_.pop();
-      auto it = front_.find(e.key);
-      if(it == front_.end() || it->second.version != e.version) continue;
+      const Front_edge* it = front_.find(e.key);
+      if(it == nullptr || it->version != e.version) continue;
       ++stats_.front_edges_processed;
-      process_edge(source(e.key), target(e.key));
+      {
+        Phase_scope phase(this, PLACEMENT);
+        process_edge(source(e.key), target(e.key));
+      }
       // A new point may leave the edge open (its apex after the cavity was
       // another point): the edge stays on the front and must be queued again.
-      auto left = front_.find(e.key);
-      if(left != front_.end()) queue_.push(Queue_entry{e.length, e.key, left->second.version});
+      const Front_edge* left = front_.find(e.key);
+      if(left != nullptr) queue_.push(Queue_entry{e.length, e.key, left->version});
       visitor_.on_progress(domain_area_ > 0 ? (std::min)(1., meshed_area_ / domain_area_) : 1.);
       return true;
     }
@@ -800,7 +1050,7 @@ private:
   void process_edge(Vid a, Vid b)
   {
     const double ax = x(a), ay = y(a), bx = x(b), by = y(b);
-    const double L = std::hypot(bx - ax, by - ay);
+    const double L = length(bx - ax, by - ay);
     const double mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
     const double nx = -(by - ay) / L, ny = (bx - ax) / L; // unit normal towards the unmeshed side
     const double rho = target_circumradius(mx, my);       // step 3
@@ -814,12 +1064,21 @@ private:
     // small enough to accept, and those whose centre lies before d_target
     // (which limit the new point's position, Fig. 7).
     const double radius = (std::max)(2 * accept, d_target + std::sqrt(d_target * d_target + 0.25 * L * L));
-    gather(mx, my, radius, nbh_);                                 // step 4
-    const Vid w = delaunay_apex(a, b, nbh_);                      // step 5
+    // The gathered disk is made large enough to also hold, in most steps,
+    // the disk of the new point's star (see insert_point), which then needs
+    // no search of its own: the new point lies at most d_target from m, and
+    // its star reaches 2 * 1.25 * max(rho, r) from it, where the circle
+    // through a, b and the point has a radius r of at most 0.57 L (at the
+    // placement floor) or rho.
+    const double star_reach = d_target + 2 * closure_tolerance * (std::max)(rho, 0.57 * L);
+    gather(mx, my, (std::max)(radius, star_reach) * (1 + 1e-6), nbh_); // step 4
+    // an apex whose circle's centre lies at d_target or higher can neither
+    // be accepted (its radius exceeds 1.41 rho) nor limit the new point
+    const Vid w = delaunay_apex(a, b, nbh_, d_target);            // step 5
     double d = d_target;
     if(w != no_vertex) {
       const Circle c = circle_of(a, b, w);
-      const double centre_offset = std::hypot(c.cx - mx, c.cy - my);
+      const double centre_offset = length(c.cx - mx, c.cy - my);
       const bool complete = centre_offset + c.r <= radius;
       if(complete && c.r <= accept) {                             // step 6: close
         close_on_existing_point(a, b, w);
@@ -837,7 +1096,7 @@ private:
       }
     }
     const double px = mx + d * nx, py = my + d * ny;
-    if(insert_point(a, b, px, py, d, rho)) return;
+    if(insert_point(a, b, px, py, d, rho, w)) return;
     ++stats_.rejected_points;
     ++stats_.forced_closures;
     forced_closure(a, b, radius);
@@ -856,7 +1115,7 @@ private:
   void forced_closure(Vid a, Vid b, double radius)
   {
     const double mx = 0.5 * (x(a) + x(b)), my = 0.5 * (y(a) + y(b));
-    const double L = std::hypot(x(b) - x(a), y(b) - y(a));
+    const double L = length(x(b) - x(a), y(b) - y(a));
     double r = (std::max)(radius, L);
     for(;;) {
       gather(mx, my, r, nbh_);
@@ -866,7 +1125,7 @@ private:
       const Vid w = delaunay_apex(a, b, nbh_);
       if(w != no_vertex) {
         const Circle c = circle_of(a, b, w);
-        const double needed = std::hypot(c.cx - mx, c.cy - my) + c.r;
+        const double needed = length(c.cx - mx, c.cy - my) + c.r;
         if(needed <= r || everything) {
           close_on_existing_point(a, b, w);
           return;
@@ -897,17 +1156,19 @@ private:
     if(!pred_.strictly_inside_circle(f->vertex(0)->point(), f->vertex(1)->point(),
                                      f->vertex(2)->point(), p))
       return false;
-    const Vid v0 = id_of(f->vertex(0)), v1 = id_of(f->vertex(1)), v2 = id_of(f->vertex(2));
+    // f's vertices need not be active: coordinates are read through f
+    auto X = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().x()); };
+    auto Y = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().y()); };
     bool inside = true;
     for(int i = 0; i < 3; ++i)
       if(pred_.orientation(f->vertex(ccw(i))->point(), f->vertex(cw(i))->point(), p) == RIGHT_TURN)
         inside = false;
     if(inside) return true;
-    if(sees_point(p, px, py, (x(v0) + x(v1) + x(v2)) / 3, (y(v0) + y(v1) + y(v2)) / 3)) return true;
+    if(sees_point(p, px, py, (X(0) + X(1) + X(2)) / 3, (Y(0) + Y(1) + Y(2)) / 3)) return true;
     for(int i = 0; i < 3; ++i) {
       if(f->neighbor(i) != Face_handle()) continue;
-      const Vid g = id_of(f->vertex(ccw(i))), h = id_of(f->vertex(cw(i)));
-      if(sees_point(p, px, py, 0.5 * (x(g) + x(h)), 0.5 * (y(g) + y(h)))) return true;
+      const int g = ccw(i), h = cw(i);
+      if(sees_point(p, px, py, 0.5 * (X(g) + X(h)), 0.5 * (Y(g) + Y(h)))) return true;
     }
     return false;
   }
@@ -916,14 +1177,15 @@ private:
   // point is rounded; this only selects which triangles are removed.
   bool sees_point(const Point& p, double px, double py, double qx, double qy)
   {
+    Phase_scope phase(this, VISIBILITY);
     const Point q(qx, qy);
     bool blocked = false;
     ++stats_.edge_octree_queries;
-    constraint_octree_.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * std::hypot(qx - px, qy - py),
-                             [&](Edge_key k) {
+    constraint_octree_.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * length(qx - px, qy - py),
+                             [&](const Constraint& c) {
       if(blocked) return;
-      const Point& pu = pt(source(k));
-      const Point& pv = pt(target(k));
+      const Point& pu = c.first->point();
+      const Point& pv = c.second->point();
       // a proper crossing only: touching an end point does not hide
       const Orientation o1 = pred_.orientation(p, q, pu), o2 = pred_.orientation(p, q, pv);
       if(o1 == COLLINEAR || o2 == COLLINEAR || o1 == o2) return;
@@ -936,23 +1198,28 @@ private:
 
   // Steps 6-12 for a new point p = (px, py) ahead of front edge a -> b.
   // Returns false (leaving the mesh unchanged) when p is not acceptable.
-  bool insert_point(Vid a, Vid b, double px, double py, double d, double rho)
+  bool insert_point(Vid a, Vid b, double px, double py, double d, double rho, Vid apex_before)
   {
     if(!std::isfinite(px) || !std::isfinite(py)) return false;
     const Point p(px, py);
     if(pred_.orientation(pt(a), pt(b), p) != LEFT_TURN) return false;
+    Phase_scope cavity_phase(this, CAVITY);
 
     // steps 7-8: broken front triangles from the circle octree, interior
     // ones by walking across unconstrained edges
     broken_.clear();
     broken_set_.clear();
     ++stats_.triangle_octree_queries;
-    triangle_octree_.query(px, py, 0., [this, &p, px, py](Face_handle f) {
-      if(broken_set_.find(f) == broken_set_.end() && is_broken(f, p, px, py)) {
-        broken_set_.insert(f);
-        broken_.push_back(f);
-      }
-    });
+    {
+      Phase_scope phase(this, CIRCLE_OCTREE);
+      triangle_octree_.query(px, py, 0., [this, &p, px, py](Face_handle f) {
+        Phase_scope cavity(this, CAVITY);
+        if(broken_set_.find(f) == broken_set_.end() && is_broken(f, p, px, py)) {
+          broken_set_.insert(f);
+          broken_.push_back(f);
+        }
+      });
+    }
     for(std::size_t i = 0; i < broken_.size(); ++i) {
       Face_handle f = broken_[i];
       for(int k = 0; k < 3; ++k) {
@@ -977,7 +1244,7 @@ private:
     removed_.clear();
     cavity_edges_.clear();
     for(Face_handle f : broken_) {
-      removed_.push_back({{id_of(f->vertex(0)), id_of(f->vertex(1)), id_of(f->vertex(2))}});
+      removed_.push_back({{acquire(f->vertex(0)), acquire(f->vertex(1)), acquire(f->vertex(2))}});
       remove_triangle(f, &cavity_edges_);
     }
 
@@ -991,9 +1258,13 @@ private:
     // every point that matters.
     const double accept = closure_tolerance * (std::max)(rho, cp.r);
     const double accept_raised = closure_tolerance * rho_new;
-    const double star_radius = (std::max)({2 * accept_raised, std::hypot(px - x(a), py - y(a)),
-                                           std::hypot(px - x(b), py - y(b))}) * (1 + 1e-9);
-    gather(px, py, star_radius, nbh_);
+    const double star_radius = (std::max)({2 * accept_raised, length(px - x(a), py - y(a)),
+                                           length(px - x(b), py - y(b))}) * (1 + 1e-9);
+    // Without a cavity the front is as it was when the edge's neighbourhood
+    // was gathered; if that disk holds the star's disk it serves as it is.
+    const bool no_cavity = broken_.empty();
+    if(!no_cavity || length(px - nbh_.cx, py - nbh_.cy) + star_radius > nbh_.radius)
+      gather(px, py, star_radius, nbh_);
     if(!is_acceptable_point(a, b, p, px, py, d)) {
       for(const std::array<Vid, 3>& t : removed_) make_triangle(t[0], t[1], t[2]);
       stats_.triangles_removed -= removed_.size();
@@ -1003,34 +1274,50 @@ private:
     // p is inside the unmeshed region: insert it
     Vertex_handle vh = tds().create_vertex();
     vh->set_point(p);
-    const Vid pid = add_vertex(vh);
-    update_vertex_state(pid);
+    const Vid pid = acquire(vh);
     ++stats_.points_inserted;
     visitor_.on_point_inserted(vh);
 
     // steps 11-12: the Delaunay triangles about p within the size bound,
     // found by closing, with Merriam's iteration, the front edges that can
     // reach p: the current edge, the cavity's boundary, and then each front
-    // edge at p in turn, which turns the fan about p in both directions
-    gather(px, py, star_radius, nbh_);
+    // edge at p in turn, which turns the fan about p in both directions.
+    // Since the neighbourhood was gathered only p has been added.
+    nbh_.vertices.push_back(pid);
+    nbh_.vertex_xy.push_back({{px, py}});
     work_.clear();
-    work_.push_back(key(a, b));
+    std::vector<Edge_key>& created = created_;
+    if(no_cavity &&
+       (apex_before == no_vertex || pred_.strictly_inside_circle(pt(a), pt(b), pt(apex_before), p))) {
+      // The apex of a -> b among the old front points was apex_before and p
+      // lies inside its circle: p is the apex now (it is visible from a and
+      // b, is_acceptable_point checked that), no search needed.
+      make_triangle(a, b, pid, &created);
+      ++stats_.triangles_around_new_points;
+      for(Edge_key e : created) work_.push_back(e);
+    } else {
+      work_.push_back(key(a, b));
+    }
     for(Edge_key k : cavity_edges_) work_.push_back(k);
-    std::vector<Edge_key> created;
     while(!work_.empty()) {
       const Edge_key k = work_.back();
       work_.pop_back();
-      if(front_.find(k) == front_.end()) continue;
+      if(!front_.contains(k)) continue;
       const Vid u = source(k), v = target(k);
       const bool at_p = (u == pid || v == pid);
       if(!at_p && pred_.orientation(pt(u), pt(v), p) != LEFT_TURN) continue;
-      if(std::hypot(x(u) - px, y(u) - py) > star_radius || std::hypot(x(v) - px, y(v) - py) > star_radius)
+      if(length(x(u) - px, y(u) - py) > star_radius || length(x(v) - px, y(v) - py) > star_radius)
         continue;
-      const Vid w = delaunay_apex(u, v, nbh_);
+      // apart from a -> b, triangles whose circle is larger than the raised
+      // bound are not built: their apex need not be found
+      const double luv2 = (x(v) - x(u)) * (x(v) - x(u)) + (y(v) - y(u)) * (y(v) - y(u));
+      const double max_height = (u == a && v == b) ? std::numeric_limits<double>::infinity()
+                              : std::sqrt((std::max)(0., accept_raised * accept_raised - 0.25 * luv2));
+      const Vid w = delaunay_apex(u, v, nbh_, max_height);
       if(w == no_vertex) continue;
       if(!at_p && w != pid) continue;
       const Circle c = circle_of(u, v, w);
-      if(std::hypot(c.cx - px, c.cy - py) + c.r > star_radius) continue;
+      if(length(c.cx - px, c.cy - py) + c.r > star_radius) continue;
       if(c.r > accept && !(u == a && v == b) &&
          (c.r > accept_raised || radius_ratio(u, v, w) < raised_bound_min_quality))
         continue;
@@ -1049,27 +1336,27 @@ private:
   // point would make a needle, and the closure fallback does better there.
   bool is_acceptable_point(Vid a, Vid b, const Point& p, double px, double py, double d) const
   {
+    Phase_scope phase(this, PLACEMENT);
     const double min_dist = point_clearance * d;
-    for(std::size_t z : nbh_.vertices) {
-      if(std::hypot(x(Vid(z)) - px, y(Vid(z)) - py) < min_dist) return false;
-      if(pt(Vid(z)) == p) return false;
+    for(std::size_t i = 0; i < nbh_.vertices.size(); ++i) {
+      if(length(nbh_.vertex_xy[i][0] - px, nbh_.vertex_xy[i][1] - py) < min_dist) return false;
+      if(pt(Vid(nbh_.vertices[i])) == p) return false;
     }
-    if(!visible(a, pt(a), no_vertex, p, nbh_) || !visible(b, pt(b), no_vertex, p, nbh_)) return false;
-    auto too_close = [&](Vid g, Vid h) {
-      return segment_distance(px, py, x(g), y(g), x(h), y(h)) < min_dist;
-    };
-    for(Edge_key k : nbh_.edges)
-      if(front_.find(k) != front_.end() && too_close(source(k), target(k))) return false;
-    for(std::size_t z : nbh_.vertices)
-      for(Vid w : out_[z])
-        if(too_close(Vid(z), w)) return false;
-    return true;
+    // the clearance tests first: plain arithmetic, they reject most points
+    // that fail at all before the exact visibility tests run
+    for(const Near_edge& e : nbh_.edges)
+      if(segment_distance(px, py, e.x0, e.y0, e.x1, e.y1) < min_dist && front_.contains(e.key)) return false;
+    for(Edge_key k : nbh_.new_edges) {
+      const Vid g = source(k), h = target(k);
+      if(segment_distance(px, py, x(g), y(g), x(h), y(h)) < min_dist && front_.contains(k)) return false;
+    }
+    return visible_from_both(a, pt(a), b, pt(b), no_vertex, p, nbh_);
   }
 
   double radius_ratio(Vid a, Vid b, Vid c) const
   {
-    const double l0 = std::hypot(x(b) - x(c), y(b) - y(c)), l1 = std::hypot(x(a) - x(c), y(a) - y(c)),
-                 l2 = std::hypot(x(a) - x(b), y(a) - y(b));
+    const double l0 = length(x(b) - x(c), y(b) - y(c)), l1 = length(x(a) - x(c), y(a) - y(c)),
+                 l2 = length(x(a) - x(b), y(a) - y(b));
     const double area = 0.5 * std::abs((x(b) - x(a)) * (y(c) - y(a)) - (y(b) - y(a)) * (x(c) - x(a)));
     const double s = 0.5 * (l0 + l1 + l2);
     return 8 * area * area / (s * l0 * l1 * l2);
@@ -1081,7 +1368,7 @@ private:
     const double l2 = dx * dx + dy * dy;
     double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
     t = (std::max)(0., (std::min)(1., t));
-    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+    return length(px - (ax + t * dx), py - (ay + t * dy));
   }
 
   // ---------------------------------------------------------- finishing
@@ -1090,24 +1377,25 @@ private:
   void close_remaining_front()
   {
     // every front edge gets a fresh queue entry, so none can be missed
-    for(const auto& fe : front_) {
-      const Vid u = source(fe.first), v = target(fe.first);
+    front_.for_each([this](Edge_key k, const Front_edge& fe) {
+      const Vid u = source(k), v = target(k);
       const double dx = x(v) - x(u), dy = y(v) - y(u);
-      queue_.push(Queue_entry{std::hypot(dx, dy), fe.first, fe.second.version});
-    }
+      queue_.push(Queue_entry{length(dx, dy), k, fe.version});
+    });
     while(!queue_.empty()) {
       const Queue_entry e = queue_.top();
       queue_.pop();
-      auto it = front_.find(e.key);
-      if(it == front_.end() || it->second.version != e.version) continue;
+      const Front_edge* it = front_.find(e.key);
+      if(it == nullptr || it->version != e.version) continue;
       const Vid a = source(e.key), b = target(e.key);
-      forced_closure(a, b, std::hypot(x(b) - x(a), y(b) - y(a)));
+      forced_closure(a, b, length(x(b) - x(a), y(b) - y(a)));
     }
   }
 
   void finish()
   {
     if(finished_) return;
+    Phase_scope phase(this, OUTPUT);
     finished_ = true;
     CGAL_assertion(front_.empty());
     if(!front_.empty()) close_remaining_front(); // never expected; keeps the result valid
@@ -1120,7 +1408,6 @@ private:
       if(f->is_in_domain()) ++faces;
     stats_.number_of_faces = faces;
     stats_.number_of_vertices = cdt_.number_of_vertices();
-    stats_.point_search_rebuilds = index_.number_of_rebuilds();
     CGAL_expensive_postcondition(cdt_.is_valid());
   }
 
@@ -1129,27 +1416,39 @@ private:
   // nothing to flip (the tests assert it); it is kept as a guarantee.
   void restore_delaunay_property()
   {
+    // Each edge is tested once, from the face with the smaller address; a
+    // flip pushes the edges of its two new faces on a stack, so the memory
+    // is that of the flips, not of the mesh (a stack of every edge was 48
+    // bytes per triangle, the largest allocation of a whole run).
     std::vector<std::pair<Face_handle, int> > stack;
-    for(auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f)
-      if(f->is_in_domain())
-        for(int i = 0; i < 3; ++i) stack.emplace_back(f, i);
-    while(!stack.empty()) {
-      Face_handle f = stack.back().first;
-      const int i = stack.back().second;
-      stack.pop_back();
-      if(f->is_constrained(i)) continue;
+    auto needs_flip = [this](Face_handle f, int i) {
+      if(f->is_constrained(i)) return false;
       Face_handle g = f->neighbor(i);
-      if(!f->is_in_domain() || !g->is_in_domain() || cdt_.is_infinite(g) || cdt_.is_infinite(f)) continue;
+      if(!f->is_in_domain() || !g->is_in_domain() || cdt_.is_infinite(g) || cdt_.is_infinite(f)) return false;
       const int j = g->index(f);
-      if(!pred_.strictly_inside_circle(f->vertex(0)->point(), f->vertex(1)->point(),
-                                       f->vertex(2)->point(), g->vertex(j)->point()))
-        continue;
-      // the triangulation's flip keeps the constraint flags right
-      cdt_.flip(f, i);
-      ++stats_.delaunay_repair_flips;
-      for(int k = 0; k < 3; ++k) {
-        stack.emplace_back(f, k);
-        stack.emplace_back(g, k);
+      return pred_.strictly_inside_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                                          g->vertex(j)->point());
+    };
+    for(auto fit = cdt_.finite_faces_begin(); fit != cdt_.finite_faces_end(); ++fit) {
+      Face_handle start = fit;
+      if(!start->is_in_domain()) continue;
+      for(int i0 = 0; i0 < 3; ++i0) {
+        if(&*start->neighbor(i0) < &*start || !needs_flip(start, i0)) continue;
+        stack.emplace_back(start, i0);
+        while(!stack.empty()) {
+          Face_handle f = stack.back().first;
+          const int i = stack.back().second;
+          stack.pop_back();
+          if(!needs_flip(f, i)) continue;
+          Face_handle g = f->neighbor(i);
+          // the triangulation's flip keeps the constraint flags right
+          cdt_.flip(f, i);
+          ++stats_.delaunay_repair_flips;
+          for(int k = 0; k < 3; ++k) {
+            stack.emplace_back(f, k);
+            stack.emplace_back(g, k);
+          }
+        }
       }
     }
   }
@@ -1180,31 +1479,46 @@ private:
   bool finished_ = false;
   std::size_t iteration_limit_ = 0;
   double time_limit_ = 0;
+  bool phase_timing_ = false;
+  mutable Phase phase_ = FRONT_SELECTION;
+  mutable Clock::time_point phase_start_;
+  mutable std::array<double, 9> phase_seconds_ = {{0, 0, 0, 0, 0, 0, 0, 0, 0}};
 
-  std::unordered_map<Edge_key, Front_edge> front_;
-  std::vector<boost::container::small_vector<Vid, 2> > out_, in_;
+  // keyed by (source, target); the empty key is no real edge
+  Advancing_front_mesh_2::internal::Flat_hash_map<Edge_key, Front_edge> front_{~Edge_key(0)};
+  std::vector<Advancing_front_mesh_2::internal::Compact_id_list> out_, in_;
   std::vector<Vertex_handle> vertex_;
   std::vector<std::array<double, 2> > xy_;
-  std::vector<std::uint32_t> tri_count_;
-  std::unordered_map<Vertex_handle, Vid, Handle_hash> vid_;
-  std::unordered_map<Face_handle, Face_record, Handle_hash> face_records_;
+  std::vector<Vid> free_ids_, released_ids_;
+  typedef typename Tds::Vertex Tds_vertex;
+  typedef typename Tds::Face Tds_face;
+  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_vertex*, Vid> vid_{nullptr};
+  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_face*, Face_record> face_records_{nullptr};
   std::priority_queue<Queue_entry> queue_;
   std::uint32_t version_counter_ = 0;
-  Advancing_front_mesh_2::internal::Dynamic_point_index index_;
+  Advancing_front_mesh_2::internal::Dynamic_point_quadtree index_;
   Triangle_octree triangle_octree_;
   Edge_octree edge_octree_;
-  Edge_octree constraint_octree_;
+  Constraint_octree constraint_octree_;
   double meshed_area_ = 0, domain_area_ = 0;
   Advancing_front_mesh_2::Statistics stats_;
 
   // scratch space reused across steps
   Neighbourhood nbh_;
-  std::vector<Vid> candidates_;
+  enum Candidate_state : unsigned char { UNTESTED, QUALIFIES, REJECTED };
+  struct Candidate
+  {
+    double height;
+    Vid vertex;
+    Candidate_state state;
+  };
+  std::vector<Candidate> candidates_;
   std::vector<Face_handle> broken_;
   std::unordered_set<Face_handle, Handle_hash> broken_set_;
   std::vector<std::array<Vid, 3> > removed_;
   std::vector<Edge_key> cavity_edges_;
   std::vector<Edge_key> work_;
+  std::vector<Edge_key> created_;
 };
 
 namespace Advancing_front_mesh_2 {

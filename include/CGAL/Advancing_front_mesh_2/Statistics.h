@@ -20,6 +20,46 @@ namespace Advancing_front_mesh_2 {
 /*!
 \ingroup PkgAdvancingFrontMesh2Ref
 
+Wall-clock seconds spent in each phase of the advancing front, measured
+only when the mesher was asked to (`Advancing_front_mesher_2::set_phase_timing()`),
+because reading the clock at every phase change costs a few percent. The
+phases partition the meshing time: each moment is charged to exactly one.
+*/
+struct Phase_times
+{
+  /// taking the next front edge from the priority queue (step 2), the sizing field (step 3)
+  double front_selection = 0;
+  /// the close-point search: queries of the active-point quadtree (step 4; its
+  /// updates are front bookkeeping)
+  double close_point_search = 0;
+  /// the Delaunay closure: candidate filtering (orientation, free sectors at
+  /// the front vertices) and Merriam's in-circle iteration (step 5)
+  double delaunay_closure = 0;
+  /// placing a new point and checking that it is acceptable (step 6)
+  double placement = 0;
+  /// queries and updates of the lifted-circle octrees (steps 7-8 and the front-edge circles)
+  double circle_octree = 0;
+  /// the cavity: removing broken triangles and rebuilding the triangles about the new point (steps 9-12)
+  double cavity = 0;
+  /// visibility: segments blocked by front edges, vertices or constraints
+  double visibility = 0;
+  /// front bookkeeping: creating and removing triangles in the data structure,
+  /// updating the front, its queue and the active-point quadtree
+  double front_update = 0;
+  /// the output: the final Delaunay check and restoring the triangulation's invariants
+  double output = 0;
+
+  /// the sum of all phases
+  double total() const
+  {
+    return front_selection + close_point_search + delaunay_closure + placement + circle_octree + cavity +
+           visibility + front_update + output;
+  }
+};
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
 Counters filled by `CGAL::Advancing_front_mesher_2` during a run. They
 describe the work of the algorithm of Mavriplis (1992) step by step, so that
 a user can see where time goes and how large the working set became.
@@ -49,13 +89,15 @@ struct Statistics
   /// diametral-circle octree
   std::size_t triangle_octree_queries = 0;
   std::size_t edge_octree_queries = 0;
-  /// queries of the close-point search structure (Kd_tree), and its rebuilds
+  /// queries of the close-point search structure (the quadtree of active points)
   std::size_t point_search_queries = 0;
-  std::size_t point_search_rebuilds = 0;
   /// exact predicate evaluations in the Delaunay closure (Merriam's iteration)
   std::size_t incircle_tests = 0;
   /// largest number of front edges at any time
   std::size_t largest_front = 0;
+  /// largest number of active vertices (front vertices and free points),
+  /// the only ones the mesher keeps a record of
+  std::size_t largest_active_vertices = 0;
   /// largest number of live triangles: front triangles, whose circumcircles
   /// reach past the front and are held by the circle octree
   std::size_t largest_live_triangles = 0;
@@ -68,6 +110,8 @@ struct Statistics
   /// wall-clock seconds: initialisation (domain marking, front) and meshing
   double init_time = 0;
   double meshing_time = 0;
+  /// time per phase; all zero unless phase timing was switched on
+  Phase_times phase_times;
 };
 
 } // namespace Advancing_front_mesh_2
