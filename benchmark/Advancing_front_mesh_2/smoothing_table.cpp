@@ -41,28 +41,10 @@ double seconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// Mesh_2 splits input segments where they are encroached: its meshes are
-// checked against the segments as split (the constrained edges).
-afm_check::Pslg refined_pslg(const CDT& cdt, const Poly_data& in)
-{
-  afm_check::Pslg p;
-  std::map<CDT::Vertex_handle, std::size_t> id;
-  auto index = [&](CDT::Vertex_handle v) {
-    auto it = id.find(v);
-    if(it != id.end()) return it->second;
-    p.points.push_back({{v->point().x(), v->point().y()}});
-    return id[v] = p.points.size() - 1;
-  };
-  for(const auto& e : cdt.constrained_edges())
-    p.segments.push_back({{index(e.first->vertex(CDT::cw(e.second))), index(e.first->vertex(CDT::ccw(e.second)))}});
-  p.holes = in.holes;
-  return p;
-}
-
 void print(const std::string& geometry, const std::string& mesher, const CDT& cdt, const Poly_data& in, double seconds)
 {
   const AFM::Mesh_quality q = AFM::mesh_quality(cdt);
-  const afm_check::Report r = afm_check::check_mesh(refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
+  const afm_check::Report r = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
   std::cout << "| " << geometry << " | " << mesher << " | " << q.number_of_triangles << " | " << std::fixed
             << std::setprecision(3) << seconds << " | " << std::setprecision(4) << q.mean_radius_ratio << " | "
             << q.min_radius_ratio << " | " << std::setprecision(1) << 100 * q.share_above_0_9 << "% | "

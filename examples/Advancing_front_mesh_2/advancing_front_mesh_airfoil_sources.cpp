@@ -21,6 +21,7 @@
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 
 #include "afm_geometries.h"
+#include "afm_paper_sources.h"
 #include "afm_shared_data.h"
 
 #include <chrono>
@@ -168,26 +169,6 @@ int mesh_and_report(const Run& run)
   return EXIT_SUCCESS;
 }
 
-// 4 sources on the far field (at 0, 90, 180 and 270 degrees) and 6 near the
-// surfaces: ahead of the slat, in the slat cove, over the main element, at
-// the main trailing edge, and behind each flap.
-std::vector<Source> figure_12_sources(const Point& far_centre, double far_radius, double far_size)
-{
-  std::vector<Source> s;
-  for(int i = 0; i < 4; ++i) {
-    const double a = i * CGAL_PI / 2;
-    s.emplace_back(Point(far_centre.x() + far_radius * std::cos(a), far_centre.y() + far_radius * std::sin(a)),
-                   far_size);
-  }
-  s.emplace_back(Point(-0.25, -0.05), 0.012);
-  s.emplace_back(Point(-0.03, -0.04), 0.008);
-  s.emplace_back(Point(0.45, 0.15), 0.04);
-  s.emplace_back(Point(1.0, 0.02), 0.01);
-  s.emplace_back(Point(1.25, -0.12), 0.015);
-  s.emplace_back(Point(1.45, -0.3), 0.03);
-  return s;
-}
-
 int main(int argc, char* argv[])
 {
   const std::string out_dir = argc > 1 ? argv[1] : ".";
@@ -199,7 +180,7 @@ int main(int argc, char* argv[])
   four.name = "four-element airfoil (Mavriplis 1992, Fig. 12)";
   four.out_prefix = out_dir + "/four_element_airfoil";
   four.boundary = afm_geometry::multi_element_airfoil(far_radius, far_points);
-  four.sources = figure_12_sources(Point(0.5, 0), far_radius, 2 * CGAL_PI * far_radius / far_points);
+  four.sources = afm_paper::figure_12_sources<K>(Point(0.5, 0), far_radius, 2 * CGAL_PI * far_radius / far_points);
   four.close_up = CGAL::Bbox_2(-0.35, -0.55, 1.65, 0.45);
   status |= mesh_and_report(four);
 
@@ -208,7 +189,7 @@ int main(int argc, char* argv[])
     p30.name = "30P-30N three-element airfoil (shared data)";
     p30.out_prefix = out_dir + "/thirty_p_thirty_n";
     p30.boundary = afm_shared_data::thirty_p_thirty_n(argv[2], far_radius, far_points);
-    p30.sources = figure_12_sources(Point(0.5, 0), far_radius, 2 * CGAL_PI * far_radius / far_points);
+    p30.sources = afm_paper::figure_12_sources<K>(Point(0.5, 0), far_radius, 2 * CGAL_PI * far_radius / far_points);
     p30.close_up = CGAL::Bbox_2(-0.3, -0.5, 1.5, 0.4);
     status |= mesh_and_report(p30);
   }

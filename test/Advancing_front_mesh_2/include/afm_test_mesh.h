@@ -60,6 +60,25 @@ std::list<typename CDT::Point> seeds_of(const Poly_data& in)
   return seeds;
 }
 
+// Mesh_2 splits encroached input segments: its meshes are checked against
+// the segments as split, the triangulation's constrained edges.
+template <class CDT>
+afm_check::Pslg refined_pslg(const CDT& cdt, const Poly_data& in)
+{
+  afm_check::Pslg p;
+  std::map<typename CDT::Vertex_handle, std::size_t> id;
+  auto index = [&](typename CDT::Vertex_handle v) {
+    auto it = id.find(v);
+    if(it != id.end()) return it->second;
+    p.points.push_back({{CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}});
+    return id[v] = p.points.size() - 1;
+  };
+  for(const auto& e : cdt.constrained_edges())
+    p.segments.push_back({{index(e.first->vertex(CDT::cw(e.second))), index(e.first->vertex(CDT::ccw(e.second)))}});
+  p.holes = in.holes;
+  return p;
+}
+
 inline afm_check::Pslg to_pslg(const Poly_data& in)
 {
   afm_check::Pslg p;
