@@ -41,7 +41,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -443,6 +442,8 @@ private:
 
   Tds& tds() { return cdt_.tds(); }
   const Point& pt(Vid v) const { return vertex_[v]->point(); }
+  // the stored coordinates xy_ are exact (the kernel's number type is double)
+  static constexpr bool double_coordinates = std::is_same<FT, double>::value;
   double x(Vid v) const { return xy_[v][0]; }
   double y(Vid v) const { return xy_[v][1]; }
 
@@ -614,6 +615,7 @@ private:
       live.push_back(Queue_entry{length(x(v) - x(u), y(v) - y(u)), k, fe.version});
     });
     queue_ = std::priority_queue<Queue_entry>(std::less<Queue_entry>(), std::move(live));
+    ++queue_compactions_;
   }
 
   void remove_front_edge(Vid u, Vid v)
@@ -886,13 +888,16 @@ private:
   // far from a segment, and this test skips their exact tests.
   struct Segment_box
   {
+    // doubles are exact; CGAL promises to_double of other number types (a
+    // lazy exact number) only to a relative precision of 1e-5
+    static constexpr double relative_pad = double_coordinates ? 1e-14 : 1e-5;
     double x0, y0, x1, y1;
 
     Segment_box(const Point& ps, const Point& pt_)
     {
       const double sx = CGAL::to_double(ps.x()), sy = CGAL::to_double(ps.y());
       const double tx = CGAL::to_double(pt_.x()), ty = CGAL::to_double(pt_.y());
-      const double pad = 1e-14 * (std::max)({std::abs(sx), std::abs(sy), std::abs(tx), std::abs(ty)});
+      const double pad = relative_pad * (std::max)({std::abs(sx), std::abs(sy), std::abs(tx), std::abs(ty)});
       x0 = (std::min)(sx, tx) - pad; x1 = (std::max)(sx, tx) + pad;
       y0 = (std::min)(sy, ty) - pad; y1 = (std::max)(sy, ty) + pad;
     }
@@ -900,7 +905,7 @@ private:
     // the box of the segment (or point) g-h does not meet this one
     bool apart(double gx, double gy, double hx, double hy) const
     {
-      const double gpad = 1e-14 * (std::max)({std::abs(gx), std::abs(gy), std::abs(hx), std::abs(hy)});
+      const double gpad = relative_pad * (std::max)({std::abs(gx), std::abs(gy), std::abs(hx), std::abs(hy)});
       return (std::max)(gx, hx) + gpad < x0 || (std::min)(gx, hx) - gpad > x1 ||
              (std::max)(gy, hy) + gpad < y0 || (std::min)(gy, hy) - gpad > y1;
     }
@@ -952,9 +957,10 @@ private:
   // When the caller has no use for an apex whose circle's centre lies at
   // `max_centre_height` or more above the edge (such a triangle is too
   // large to be built, and the new point would lie inside its circle), the
-  // candidates beyond that height are dropped before their costly tests;
-  // since they lie outside the circles of all lower candidates, the answer
-  // among the others is unchanged, and no_vertex means "no apex below".
+  // candidates surely beyond that height are dropped before their costly
+  // tests; since they lie outside the circles of all lower candidates, the
+  // answer among the others is unchanged, and no_vertex means "no apex
+  // below".
   Vid delaunay_apex(Vid a, Vid b, const Neighbourhood& n,
                     double max_centre_height = std::numeric_limits<double>::infinity())
   {
@@ -969,26 +975,54 @@ private:
     const double mx = 0.5 * (x(a) + x(b)), my = 0.5 * (y(a) + y(b));
     const double tx = x(b) - x(a), ty = y(b) - y(a);
     const double quarter_l2 = 0.25 * (tx * tx + ty * ty);
-    // heights below are centre heights in units of half the edge length; the
-    // cut-off is padded by far more than their rounding errors, which grow
-    // with the coordinates' magnitude over the edge length
+    // heights below are centre heights in units of half the edge length
     const double half_length = std::sqrt(quarter_l2);
-    const double rounding = 1e-12 * (std::abs(mx) + std::abs(my)) / half_length;
-    const double cutoff = max_centre_height / half_length;
+    // With other number types than double, the stored coordinates are only
+    // approximations (to_double of a lazy number may be off by 1e-5), so no
+    // candidate is dropped on their account.
+    const double cutoff = double_coordinates ? max_centre_height / half_length
+                                             : std::numeric_limits<double>::infinity();
     candidates_.clear();
+    dropped_.clear();
+    // Error bounds of the double computation below (a few units in the last
+    // place of every term, generously): each candidate's true height lies in
+    // [low, high]. A candidate is dropped only if its low bound is above the
+    // cut-off; if a kept one may lie above it (its high bound is), the
+    // dropped ones it might not exclude are taken back, so the answer among
+    // the kept candidates is the answer among all.
+    const double eps = 1e-15;
+    const double e_t = eps * (std::abs(x(a)) + std::abs(y(a)) + std::abs(x(b)) + std::abs(y(b)));
+    double straddle = -std::numeric_limits<double>::infinity();
     for(std::size_t z : n.vertices) {
       const Vid c = Vid(z);
       if(c == a || c == b) continue;
       if(pred_.orientation(pa, pb, pt(c)) != LEFT_TURN) continue;
-      // with the edge's length as unit: the circle through a, b and c has
-      // its centre at this height over the midpoint (times |ab|)
+      // with half the edge's length as unit: the circle through a, b and c
+      // has its centre at height num / v over the midpoint
       const double dx = x(c) - mx, dy = y(c) - my;
       const double u = dx * tx + dy * ty, v = dy * tx - dx * ty;
-      const double along2 = quarter_l2 > 0 ? u * u / (4 * quarter_l2) : 0;
-      const double height = v > 0 ? (along2 + v * v / (4 * quarter_l2) - quarter_l2) / v : 0;
-      if(std::isfinite(height) && height > cutoff + 1e-6 + rounding * (1 + std::abs(height))) continue;
-      candidates_.push_back(Candidate{std::isfinite(height) ? height : 0., c, UNTESTED});
+      const double along2 = u * u / (4 * quarter_l2), across2 = v * v / (4 * quarter_l2);
+      const double num = along2 + across2 - quarter_l2;
+      const double e_d = eps * (std::abs(x(c)) + std::abs(y(c)) + std::abs(mx) + std::abs(my));
+      const double e_uv = e_d * (std::abs(tx) + std::abs(ty)) + e_t * (std::abs(dx) + std::abs(dy)) +
+                          eps * (std::abs(dx * tx) + std::abs(dy * ty) + std::abs(dy * tx) + std::abs(dx * ty));
+      const double e_num = (2 * (std::abs(u) + std::abs(v)) * e_uv + e_uv * e_uv) / (4 * quarter_l2) +
+                           eps * (along2 + across2 + quarter_l2) + 4 * eps * quarter_l2;
+      const double height = v > 0 ? num / v : 0;
+      const double low = (v + e_uv > 0 && num - e_num > 0) ? (num - e_num) / (v + e_uv)
+                                                          : -std::numeric_limits<double>::infinity();
+      const double high = (v - e_uv > 0) ? (num + e_num) / (v - e_uv) : std::numeric_limits<double>::infinity();
+      const Candidate cand{std::isfinite(height) ? height : 0., c, UNTESTED, low};
+      if(low > cutoff && std::isfinite(low)) {
+        dropped_.push_back(cand);
+      } else {
+        candidates_.push_back(cand);
+        if(!(high <= cutoff)) straddle = (std::max)(straddle, std::isnan(high) ? std::numeric_limits<double>::infinity() : high);
+      }
     }
+    if(straddle > cutoff)
+      for(const Candidate& d : dropped_)
+        if(!(d.low > straddle)) candidates_.push_back(d);
     std::sort(candidates_.begin(), candidates_.end(),
               [](const Candidate& p, const Candidate& q) { return p.height < q.height; });
     auto qualifies = [&](Candidate& cand) {
@@ -1033,14 +1067,17 @@ private:
       const Front_edge* it = front_.find(e.key);
       if(it == nullptr || it->version != e.version) continue;
       ++stats_.front_edges_processed;
+      const std::size_t compactions = queue_compactions_;
       {
         Phase_scope phase(this, PLACEMENT);
         process_edge(source(e.key), target(e.key));
       }
       // A new point may leave the edge open (its apex after the cavity was
-      // another point): the edge stays on the front and must be queued again.
+      // another point): the edge stays on the front and must be queued
+      // again, unless a compaction of the queue already did so.
       const Front_edge* left = front_.find(e.key);
-      if(left != nullptr) queue_.push(Queue_entry{e.length, e.key, left->version});
+      if(left != nullptr && compactions == queue_compactions_)
+        queue_.push(Queue_entry{e.length, e.key, left->version});
       visitor_.on_progress(domain_area_ > 0 ? (std::min)(1., meshed_area_ / domain_area_) : 1.);
       return true;
     }
@@ -1086,10 +1123,13 @@ private:
       }
       const double h_w = (c.cx - mx) * nx + (c.cy - my) * ny;     // signed height of its centre
       if(h_w < d_target) {
-        if(h_w < placement_floor * L) {
-          // no room for a point between the edge and the circle: close
+        if(!(h_w >= placement_floor * L)) {
+          // No room for a point between the edge and the circle: close. On
+          // w only if its circle lies in the searched disk (then no front
+          // point outside can be in it); otherwise the closure searches on.
           ++stats_.forced_closures;
-          close_on_existing_point(a, b, w);
+          if(complete) close_on_existing_point(a, b, w);
+          else forced_closure(a, b, radius);
           return;
         }
         d = h_w;                                                  // upper clamp (Fig. 7)
@@ -1287,6 +1327,7 @@ private:
     nbh_.vertex_xy.push_back({{px, py}});
     work_.clear();
     std::vector<Edge_key>& created = created_;
+    created.clear();
     if(no_cavity &&
        (apex_before == no_vertex || pred_.strictly_inside_circle(pt(a), pt(b), pt(apex_before), p))) {
       // The apex of a -> b among the old front points was apex_before and p
@@ -1317,9 +1358,10 @@ private:
       if(w == no_vertex) continue;
       if(!at_p && w != pid) continue;
       const Circle c = circle_of(u, v, w);
-      if(length(c.cx - px, c.cy - py) + c.r > star_radius) continue;
-      if(c.r > accept && !(u == a && v == b) &&
-         (c.r > accept_raised || radius_ratio(u, v, w) < raised_bound_min_quality))
+      // written so that a circle that could not be computed (NaN) is rejected
+      if(!(length(c.cx - px, c.cy - py) + c.r <= star_radius)) continue;
+      if(!(c.r <= accept) && !(u == a && v == b) &&
+         (!(c.r <= accept_raised) || !(radius_ratio(u, v, w) >= raised_bound_min_quality)))
         continue;
       created.clear();
       make_triangle(u, v, w, &created);
@@ -1395,7 +1437,15 @@ private:
   void finish()
   {
     if(finished_) return;
-    Phase_scope phase(this, OUTPUT);
+    {
+      Phase_scope phase(this, OUTPUT);
+      finish_triangulation();
+    }
+    store_phase_times();
+  }
+
+  void finish_triangulation()
+  {
     finished_ = true;
     CGAL_assertion(front_.empty());
     if(!front_.empty()) close_remaining_front(); // never expected; keeps the result valid
@@ -1496,6 +1546,7 @@ private:
   Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_face*, Face_record> face_records_{nullptr};
   std::priority_queue<Queue_entry> queue_;
   std::uint32_t version_counter_ = 0;
+  std::size_t queue_compactions_ = 0;
   Advancing_front_mesh_2::internal::Dynamic_point_quadtree index_;
   Triangle_octree triangle_octree_;
   Edge_octree edge_octree_;
@@ -1508,11 +1559,12 @@ private:
   enum Candidate_state : unsigned char { UNTESTED, QUALIFIES, REJECTED };
   struct Candidate
   {
-    double height;
+    double height;         // approximate circle-centre height, for the order
     Vid vertex;
     Candidate_state state;
+    double low;            // a lower bound of the true height
   };
-  std::vector<Candidate> candidates_;
+  std::vector<Candidate> candidates_, dropped_;
   std::vector<Face_handle> broken_;
   std::unordered_set<Face_handle, Handle_hash> broken_set_;
   std::vector<std::array<Vid, 3> > removed_;

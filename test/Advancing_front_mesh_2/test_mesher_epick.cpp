@@ -221,3 +221,32 @@ AFM_TEST_CASE(test_limits_return_codes_and_valid_mesh)
   const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
   AFM_CHECK_MSG(rep.ok, rep.summary());
 }
+
+// Found in review: a candidate nearly in line with the edge (left of it by
+// less than the rounding of the double height formula) must not let the
+// height cut-off of Merriam's iteration drop a point lying inside its
+// circle, here the free point.
+AFM_TEST_CASE(test_mesh_near_collinear_candidate_and_height_cutoff)
+{
+  afm_test::Poly_data in;
+  in.points = {{{1.3896248043163184, -0.1424222458432004}}, {{0.7646549190404963, 0.4878783949750474}},
+               {{0.44484097217371904, 0.9720416115605681}}, {{-0.2032050570665913, 1.9531121780145193}},
+               {{-0.537677012391101, 2.7753011869528335}}, {{-10.220941344101515, -3.6209777503827123}},
+               {{-8.293639527394097, -6.5387011831787465}}, {{-0.5821174948282521, 1.6845168872381877}}};
+  for(std::size_t i = 0; i < 7; ++i) in.segments.push_back({{i, (i + 1) % 7}});
+  mesh_and_check<CDT>(in, uniform<K>(1.1605084763239666), "near-collinear candidate, free point", 1);
+}
+
+// Found in review (older than the cut-off): with no room for a point below
+// the circle of the apex, the edge was closed on it even when that circle
+// reached beyond the searched disk, where a front point could lie in it.
+AFM_TEST_CASE(test_mesh_placement_floor_with_incomplete_circle)
+{
+  afm_test::Poly_data in;
+  in.points = {{{1.3896248043163184, -0.1424222458432004}}, {{0.7646549190404963, 0.4878783949750474}},
+               {{0.44484097217371904, 0.9720416115605681}}, {{-0.2032050570665913, 1.9531121780145193}},
+               {{-0.537677012391101, 2.7753011869528335}}, {{-48.95399867094317, -29.20609349972489}},
+               {{-47.02669685423575, -32.123816932520924}}};
+  for(std::size_t i = 0; i < 7; ++i) in.segments.push_back({{i, (i + 1) % 7}});
+  mesh_and_check<CDT>(in, uniform<K>(5.802542381619833), "placement floor, incomplete circle", 1);
+}
