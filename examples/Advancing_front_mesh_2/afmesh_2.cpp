@@ -327,6 +327,7 @@ int run(const Options& opt)
        << ", \"incircle_tests\": " << st.incircle_tests
        << ", \"largest_front\": " << st.largest_front
        << ", \"largest_live_triangles\": " << st.largest_live_triangles
+       << ", \"largest_active_vertices\": " << st.largest_active_vertices
        << ", \"delaunay_repair_flips\": " << st.delaunay_repair_flips << "}, ";
     os << "\"quality\": {";
     json_number(os, "min_radius_ratio", q.min_radius_ratio);
