@@ -203,4 +203,43 @@ AFM_TEST_CASE(test_internal_lifted_circle_octree)
   for(std::size_t i = 0; i < circles.size(); ++i) tree.insert(circles[i].x, circles[i].y, circles[i].r, int(i));
   AFM_CHECK_MSG(tree.number_of_nodes() <= nodes, "merged node blocks were not reused: " << nodes << " -> "
                                                                                         << tree.number_of_nodes());
+
+  // Radii are divided only where they differ by more than half a leaf's
+  // width: not for circles of one size spread out, but for circles of
+  // sizes 1e-6 .. 1 about nearly one centre, which queries must still find.
+  auto brute_force_agrees = [](const AFMI::Lifted_circle_octree<int>& t, const std::vector<C>& cs,
+                               double qx, double qy, double inflate) {
+    std::vector<int> got;
+    t.query(qx, qy, inflate, [&got](int i) { got.push_back(i); });
+    std::sort(got.begin(), got.end());
+    for(std::size_t i = 0; i < cs.size(); ++i) {
+      const double d = std::hypot(cs[i].x - qx, cs[i].y - qy);
+      const bool reported = std::binary_search(got.begin(), got.end(), int(i));
+      if(d < cs[i].r + inflate && !reported) return false;
+      if(reported && d > (cs[i].r + inflate) * (1 + 1e-6) + 1e-9) return false;
+    }
+    return true;
+  };
+  AFMI::Lifted_circle_octree<int> uniform, nested;
+  uniform.reset(-1, -1, 2, 2, 3, 4);
+  nested.reset(-1, -1, 2, 2, 3, 4);
+  std::vector<C> same(2000), sizes(400);
+  for(std::size_t i = 0; i < same.size(); ++i) {
+    same[i] = C{coord(rng), coord(rng), 0.01, true, 0};
+    uniform.insert(same[i].x, same[i].y, same[i].r, int(i));
+  }
+  for(std::size_t i = 0; i < sizes.size(); ++i) {
+    sizes[i] = C{0.5 + 1e-7 * coord(rng), 0.5 + 1e-7 * coord(rng), std::pow(10., -6 * coord(rng)), true, 0};
+    nested.insert(sizes[i].x, sizes[i].y, sizes[i].r, int(i));
+  }
+  AFM_CHECK_MSG(uniform.number_of_radius_divisions() == 0, uniform.number_of_radius_divisions());
+  AFM_CHECK(nested.number_of_radius_divisions() > 0);
+  for(int q = 0; q < 300; ++q) {
+    const double qx = coord(rng), qy = coord(rng), inflate = (q % 2) ? 0.02 * coord(rng) : 0.;
+    AFM_CHECK_MSG(brute_force_agrees(uniform, same, qx, qy, inflate), "uniform, query " << q);
+    // queries near the nested circles' centre, at distances of all scales
+    const double dist = std::pow(10., -7 * coord(rng)), angle = 6.283 * coord(rng);
+    AFM_CHECK_MSG(brute_force_agrees(nested, sizes, 0.5 + dist * std::cos(angle), 0.5 + dist * std::sin(angle), 0.),
+                  "nested, query " << q);
+  }
 }

@@ -77,9 +77,11 @@ private:
   {
     std::array<double, 6> box; // x0, y0, r0, x1, y1, r1
     double max_r = -1;         // bound on the radii stored in the subtree; -1: empty since made
+    double r_split = 0;        // radius dividing the children, if they are 8
     int first_child = no_child;
     int parent = -1;
     int depth = 0;
+    int children = 0;          // 8 (octants), or 4 (quadrants, r not divided)
     std::vector<Entry> entries;
   };
 
@@ -105,7 +107,8 @@ public:
                                          std::abs(ymax), rmax, 1e-300});
     abs_pad_ = 1e-12 * magnitude;
     nodes_.clear();
-    free_blocks_.clear();
+    free_blocks_[0].clear();
+    free_blocks_[1].clear();
     items_.clear();
     free_items_.clear();
     overflow_.clear();
@@ -120,6 +123,15 @@ public:
   std::size_t size() const { return size_; }
   std::size_t overflow_size() const { return overflow_.size(); }
   std::size_t number_of_nodes() const { return nodes_.size(); }
+
+  // inner nodes whose children also divide the radii (for tests)
+  std::size_t number_of_radius_divisions() const
+  {
+    std::size_t k = 0;
+    for(const Node& n : nodes_)
+      if(n.first_child != no_child && n.children == 8) ++k;
+    return k;
+  }
 
   const Payload& payload(Item_id id) const { return items_[id].payload; }
 
@@ -149,7 +161,7 @@ public:
       Node& node = nodes_[n];
       node.max_r = (std::max)(node.max_r, r);
       if(node.first_child == no_child) break;
-      n = node.first_child + child_index(node.box, cx, cy, r);
+      n = node.first_child + child_index(node, cx, cy, r);
     }
     add_to_leaf(n, e);
     return id;
@@ -193,7 +205,7 @@ public:
       if(n.first_child == no_child) {
         for(const Entry& e : n.entries) test_entry(e, qx, qy, inflate, f);
       } else {
-        for(int c = 0; c < 8; ++c)
+        for(int c = 0; c < n.children; ++c)
           if(nodes_[n.first_child + c].max_r >= 0) stack_.push_back(n.first_child + c);
       }
     }
@@ -219,10 +231,11 @@ private:
     return x >= b[0] && x <= b[3] && y >= b[1] && y <= b[4] && r >= b[2] && r <= b[5];
   }
 
-  static int child_index(const std::array<double, 6>& b, double x, double y, double r)
+  static int child_index(const Node& n, double x, double y, double r)
   {
+    const std::array<double, 6>& b = n.box;
     return (x > 0.5 * (b[0] + b[3]) ? 1 : 0) + (y > 0.5 * (b[1] + b[4]) ? 2 : 0) +
-           (r > 0.5 * (b[2] + b[5]) ? 4 : 0);
+           (n.children == 8 && r > n.r_split ? 4 : 0);
   }
 
   void add_to_leaf(int n, const Entry& e)
@@ -237,44 +250,64 @@ private:
   {
     while(n >= 0) {
       Node& node = nodes_[n];
-      for(int c = node.first_child; c < node.first_child + 8; ++c)
+      const int end = node.first_child + node.children;
+      for(int c = node.first_child; c < end; ++c)
         if(nodes_[c].first_child != no_child || !nodes_[c].entries.empty()) return;
       // the leaves' buffers are freed here, not when they empty: a leaf at
       // the front empties and fills again many times
-      for(int c = node.first_child; c < node.first_child + 8; ++c) std::vector<Entry>().swap(nodes_[c].entries);
-      free_blocks_.push_back(node.first_child);
+      for(int c = node.first_child; c < end; ++c) std::vector<Entry>().swap(nodes_[c].entries);
+      free_blocks_[node.children == 8].push_back(node.first_child);
       node.first_child = no_child;
       node.max_r = -1;
       n = node.parent;
     }
   }
 
+  // The radii are divided only where the leaf's circles differ in size by
+  // more than about half the leaf's width: only then does the cone test
+  // prune one size class and not the other. With a smooth size field the
+  // circles near each other have nearly equal radii, and dividing the
+  // r-axis at its midpoint, as a plain octree does, adds a level per
+  // halving of the root's r-range (about ten on a uniform mesh) that prunes
+  // nothing but lengthens every insertion and query path. Where the radii
+  // are divided, it is at the middle of the leaf's radii, not of its box.
   void split(int n)
   {
+    const std::array<double, 6> b = nodes_[n].box;
+    double r_lo = b[5], r_hi = b[2];
+    for(const Entry& e : nodes_[n].entries) {
+      r_lo = (std::min)(r_lo, e.r);
+      r_hi = (std::max)(r_hi, e.r);
+    }
+    const double width = (std::max)(b[3] - b[0], b[4] - b[1]);
+    const double mr = 0.5 * (r_lo + r_hi);
+    const int children = (r_hi - r_lo > 0.5 * width && mr > b[2] && mr < b[5]) ? 8 : 4;
+    std::vector<int>& free_blocks = free_blocks_[children == 8];
     int first;
-    if(!free_blocks_.empty()) {
-      first = free_blocks_.back();
-      free_blocks_.pop_back();
+    if(!free_blocks.empty()) {
+      first = free_blocks.back();
+      free_blocks.pop_back();
     } else {
       first = static_cast<int>(nodes_.size());
-      nodes_.resize(nodes_.size() + 8);
+      nodes_.resize(nodes_.size() + children);
     }
-    const std::array<double, 6> b = nodes_[n].box;
-    const double mx = 0.5 * (b[0] + b[3]), my = 0.5 * (b[1] + b[4]), mr = 0.5 * (b[2] + b[5]);
-    for(int c = 0; c < 8; ++c) {
+    const double mx = 0.5 * (b[0] + b[3]), my = 0.5 * (b[1] + b[4]);
+    nodes_[n].children = children;
+    nodes_[n].r_split = mr;
+    for(int c = 0; c < children; ++c) {
       Node& child = nodes_[first + c];
       child.depth = nodes_[n].depth + 1;
       child.parent = n;
       child.first_child = no_child;
       child.max_r = -1;
       child.box = {{(c & 1) ? mx : b[0], (c & 2) ? my : b[1], (c & 4) ? mr : b[2],
-                    (c & 1) ? b[3] : mx, (c & 2) ? b[4] : my, (c & 4) ? b[5] : mr}};
+                    (c & 1) ? b[3] : mx, (c & 2) ? b[4] : my, (children == 8 && !(c & 4)) ? mr : b[5]}};
     }
     std::vector<Entry> moved;
     moved.swap(nodes_[n].entries);
     nodes_[n].first_child = first;
     for(const Entry& e : moved) {
-      const int c = first + child_index(b, e.x, e.y, e.r);
+      const int c = first + child_index(nodes_[n], e.x, e.y, e.r);
       items_[e.id].node = c;
       items_[e.id].position = nodes_[c].entries.size();
       nodes_[c].entries.push_back(e);
@@ -285,7 +318,7 @@ private:
   }
 
   std::vector<Node> nodes_;
-  std::vector<int> free_blocks_; // first nodes of blocks of 8 siblings merged away
+  std::array<std::vector<int>, 2> free_blocks_; // first nodes of merged blocks of 4 and 8 siblings
   std::vector<Item> items_;
   std::vector<Item_id> free_items_;
   std::vector<Entry> overflow_;
