@@ -159,6 +159,7 @@ private:
     std::vector<std::array<double, 2> > vertex_xy; // their coordinates, in the same order
     std::vector<Near_edge> edges;                // front edges meeting the disk when gathered
     std::vector<Edge_key> new_edges;             // front edges created since
+    std::vector<Edge_key> removed_edges;         // front edges removed since
   };
 
   struct Circle
@@ -624,6 +625,8 @@ private:
     CGAL_assertion(it != nullptr);
     const Front_edge fe = *it;
     front_.erase(key(u, v));
+    // beyond 8 removals still_on_front() probes the table: no need to list more
+    if(nbh_.removed_edges.size() <= 8) nbh_.removed_edges.push_back(key(u, v));
     {
       Phase_scope phase(this, CIRCLE_OCTREE);
       edge_octree_.remove(fe.circle_item);
@@ -837,6 +840,7 @@ private:
     n.vertex_xy.clear();
     n.edges.clear();
     n.new_edges.clear();
+    n.removed_edges.clear();
     {
       Phase_scope phase(this, CLOSE_POINT_SEARCH);
       index_.query(cx, cy, radius, [&n](std::size_t id, double px, double py) {
@@ -851,6 +855,18 @@ private:
       n.edges.push_back(Near_edge{k, x(g), y(g), x(h), y(h)});
     });
     ++stats_.edge_octree_queries;
+  }
+
+  // Is k, a front edge of n.edges or n.new_edges, still on the front? It
+  // is unless it was removed since n was gathered (and not created again);
+  // the few removals since are scanned instead of probing the front's hash
+  // table, whose probes miss the cache on large fronts.
+  bool still_on_front(Edge_key k, const Neighbourhood& n) const
+  {
+    if(n.removed_edges.size() > 8) return front_.contains(k);
+    for(Edge_key r : n.removed_edges)
+      if(r == k) return front_.contains(k);
+    return true;
   }
 
   // Is the direction from front vertex v towards q inside the unmeshed
@@ -886,13 +902,22 @@ private:
   }
 
   // Does front edge (g, h) block the segment s-t (s, t given as vertex ids,
-  // or no_vertex for the new point)?
+  // or no_vertex for the new point), which is not a front edge and leaves
+  // its end points strictly inside free sectors (in_free_sector() passed)?
+  // An edge sharing an end point with the segment could only block it by
+  // running along it, and no front edge enters the inside of a free sector
+  // (around a vertex, the front's edges alternate between leaving and
+  // entering it, and a free sector runs from a leaving edge to the next
+  // entering one): such an edge never blocks, without a predicate.
   bool edge_blocks(Vid g, Vid h, Vid s, const Point& ps, Vid t, const Point& pt_) const
   {
-    if((g == s && h == t) || (g == t && h == s)) return false;
     const bool gs = (g == s), gt = (g == t), hs = (h == s), ht = (h == t);
-    if(gs || hs) return pred_.overlap_from_shared_end(ps, pt(gs ? h : g), pt_);
-    if(gt || ht) return pred_.overlap_from_shared_end(pt_, pt(gt ? h : g), ps);
+    if(gs || hs || gt || ht) {
+      CGAL_assertion(((gs && ht) || (gt && hs)) ||
+                     !((gs || hs) ? pred_.overlap_from_shared_end(ps, pt(gs ? h : g), pt_)
+                                  : pred_.overlap_from_shared_end(pt_, pt(gt ? h : g), ps)));
+      return false;
+    }
     return pred_.closed_segments_meet(ps, pt_, pt(g), pt(h));
   }
 
@@ -959,13 +984,15 @@ private:
   // always need both (an apex seen from a and b, a new point seen from a and
   // b).
   bool visible_from_both(Vid s1, const Point& ps1, Vid s2, const Point& ps2, Vid t, const Point& pt_,
-                         const Neighbourhood& n) const
+                         const Neighbourhood& n, bool sectors_tested = false) const
   {
     Phase_scope phase(this, VISIBILITY);
-    if(s1 != no_vertex && !in_free_sector(s1, pt_, t)) return false;
-    if(t != no_vertex && !in_free_sector(t, ps1, s1)) return false;
-    if(s2 != no_vertex && !in_free_sector(s2, pt_, t)) return false;
-    if(t != no_vertex && !in_free_sector(t, ps2, s2)) return false;
+    if(!sectors_tested) {
+      if(s1 != no_vertex && !in_free_sector(s1, pt_, t)) return false;
+      if(t != no_vertex && !in_free_sector(t, ps1, s1)) return false;
+      if(s2 != no_vertex && !in_free_sector(s2, pt_, t)) return false;
+      if(t != no_vertex && !in_free_sector(t, ps2, s2)) return false;
+    }
     // A segment that is a front edge itself (the apex is the next vertex
     // along the front, the most common closure) crosses no front edge and
     // holds no vertex, the front being a planar straight-line graph: only
@@ -979,7 +1006,7 @@ private:
     auto blocks = [&](Vid g, Vid h, double gx, double gy, double hx, double hy, Edge_key k) {
       if(both.apart(gx, gy, hx, hy)) return false;
       const bool near1 = open1 && !box1.apart(gx, gy, hx, hy), near2 = open2 && !box2.apart(gx, gy, hx, hy);
-      if(!(near1 || near2) || !front_.contains(k)) return false;
+      if(!(near1 || near2) || !still_on_front(k, n)) return false;
       return (near1 && edge_blocks(g, h, s1, ps1, t, pt_)) || (near2 && edge_blocks(g, h, s2, ps2, t, pt_));
     };
     for(const Near_edge& e : n.edges)
@@ -1047,6 +1074,11 @@ private:
     for(std::size_t z : n.vertices) {
       const Vid c = Vid(z);
       if(c == a || c == b) continue;
+      // Points in line with an axis-parallel edge (boundary points on the
+      // sides of a box) are exactly collinear, where the filtered predicate
+      // falls back to exact arithmetic: with double coordinates, equal
+      // coordinates decide it at once.
+      if(double_coordinates && ((y(a) == y(b) && y(c) == y(a)) || (x(a) == x(b) && x(c) == x(a)))) continue;
       if(pred_.orientation(pa, pb, pt(c)) != LEFT_TURN) continue;
       // with half the edge's length as unit: the circle through a, b and c
       // has its centre at height num / v over the midpoint
@@ -1103,7 +1135,8 @@ private:
       }
       if(best == candidates_.size()) return no_vertex;
       const Vid c = candidates_[best].vertex;
-      if(visible_from_both(a, pa, b, pb, c, pt(c), n)) return c;
+      // the winner qualified: its four free-sector tests are done
+      if(visible_from_both(a, pa, b, pb, c, pt(c), n, true)) return c;
       candidates_[best].state = REJECTED;
     }
   }
@@ -1438,10 +1471,10 @@ private:
     // the clearance tests first: plain arithmetic, they reject most points
     // that fail at all before the exact visibility tests run
     for(const Near_edge& e : nbh_.edges)
-      if(segment_distance(px, py, e.x0, e.y0, e.x1, e.y1) < min_dist && front_.contains(e.key)) return false;
+      if(segment_distance(px, py, e.x0, e.y0, e.x1, e.y1) < min_dist && still_on_front(e.key, nbh_)) return false;
     for(Edge_key k : nbh_.new_edges) {
       const Vid g = source(k), h = target(k);
-      if(segment_distance(px, py, x(g), y(g), x(h), y(h)) < min_dist && front_.contains(k)) return false;
+      if(segment_distance(px, py, x(g), y(g), x(h), y(h)) < min_dist && still_on_front(k, nbh_)) return false;
     }
     return visible_from_both(a, pt(a), b, pt(b), no_vertex, p, nbh_);
   }

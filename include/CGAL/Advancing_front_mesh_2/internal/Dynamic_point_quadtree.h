@@ -155,7 +155,11 @@ public:
       const Node& n = nodes_[stack_.back()];
       stack_.pop_back();
       if(n.first_child == no_child) {
-        for(const Entry& e : n.entries) report(e, x, y, r2, f);
+        // points in the tree lie in the root box, so they are finite
+        for(const Entry& e : n.entries) {
+          const double dx = e.x - x, dy = e.y - y;
+          if(dx * dx + dy * dy <= r2) f(e.id, e.x, e.y);
+        }
         continue;
       }
       for(std::int32_t c = n.first_child; c < n.first_child + 4; ++c) {

@@ -203,7 +203,8 @@ public:
       const double reach = ((std::min)(n.box[5], n.max_r) + inflate) * (1 + 1e-9) + abs_pad_;
       if(dx * dx + dy * dy > reach * reach) continue;
       if(n.first_child == no_child) {
-        for(const Entry& e : n.entries) test_entry(e, qx, qy, inflate, f);
+        // entries in the tree lie in the root box, so they are finite
+        for(const Entry& e : n.entries) test_finite_entry(e, qx, qy, inflate, f);
       } else {
         for(int c = 0; c < n.children; ++c)
           if(nodes_[n.first_child + c].max_r >= 0) stack_.push_back(n.first_child + c);
@@ -221,6 +222,12 @@ private:
       f(items_[e.id].payload);
       return;
     }
+    test_finite_entry(e, qx, qy, inflate, f);
+  }
+
+  template <class Function>
+  void test_finite_entry(const Entry& e, double qx, double qy, double inflate, Function& f) const
+  {
     const double dx = e.x - qx, dy = e.y - qy;
     const double reach = (e.r + inflate) * (1 + 1e-9) + abs_pad_;
     if(dx * dx + dy * dy <= reach * reach) f(items_[e.id].payload);
