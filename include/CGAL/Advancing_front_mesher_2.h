@@ -118,7 +118,6 @@ private:
     int behind_index = -1;
     bool constrained = false;
     std::uint32_t version = 0;
-    std::size_t circle_item = 0;
   };
 
   struct Face_record
@@ -168,7 +167,6 @@ private:
   };
 
   typedef Advancing_front_mesh_2::internal::Lifted_circle_octree<Face_handle> Triangle_octree;
-  typedef Advancing_front_mesh_2::internal::Lifted_circle_octree<Edge_key> Edge_octree;
   // an input constraint, by its end vertices (which may become inactive)
   typedef std::pair<Vertex_handle, Vertex_handle> Constraint;
   typedef Advancing_front_mesh_2::internal::Lifted_circle_octree<Constraint> Constraint_octree;
@@ -586,17 +584,12 @@ private:
     fe.behind_index = behind_index;
     fe.constrained = constrained;
     fe.version = ++version_counter_;
-    const double mx = 0.5 * (x(u) + x(v)), my = 0.5 * (y(u) + y(v));
-    const double dx = x(v) - x(u), dy = y(v) - y(u);
-    const double len = length(dx, dy);
-    {
-      Phase_scope phase(this, CIRCLE_OCTREE);
-      fe.circle_item = edge_octree_.insert(mx, my, 0.5 * len, key(u, v));
-    }
+    const double len = length(x(v) - x(u), y(v) - y(u));
     front_.insert(key(u, v), fe);
     nbh_.new_edges.push_back(key(u, v));
     out_[u].push_back(v);
     in_[v].push_back(u);
+    if(!(len <= index_.reach(u))) index_.set_reach(u, len);
     if(behind != Face_handle() && behind->is_in_domain()) add_front_edge_to_face(behind, v, apex, u);
     queue_.push(Queue_entry{len, key(u, v), fe.version});
     if(queue_.size() > 2 * front_.size() + 1024) compact_queue();
@@ -627,13 +620,26 @@ private:
     front_.erase(key(u, v));
     // beyond 8 removals still_on_front() probes the table: no need to list more
     if(nbh_.removed_edges.size() <= 8) nbh_.removed_edges.push_back(key(u, v));
-    {
-      Phase_scope phase(this, CIRCLE_OCTREE);
-      edge_octree_.remove(fe.circle_item);
-    }
     out_[u].erase_value(v);
     in_[v].erase_value(u);
+    update_reach(u);
     if(fe.behind != Face_handle() && fe.behind->is_in_domain()) remove_front_edge_from_face(fe.behind);
+  }
+
+  // A front vertex's reach in the point quadtree is the length of its
+  // longest outgoing front edge: a front edge meeting a disk of radius s
+  // about q has its source within s + its length of q, so the vertices
+  // found within s plus their reach lead, through their outgoing edges, to
+  // every front edge near the disk (see gather()).
+  void update_reach(Vid u)
+  {
+    double reach = 0;
+    for(Vid w : out_[u]) {
+      const double l = length(x(w) - x(u), y(w) - y(u));
+      reach = std::isnan(l) ? l : (std::max)(reach, l);
+      if(std::isnan(reach)) break;
+    }
+    index_.set_reach(u, reach);
   }
 
   // A face enters the circle octree with its first front edge and leaves
@@ -688,7 +694,6 @@ private:
     const double span = (std::max)(xmax - xmin, ymax - ymin);
     triangle_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span, 32);
     index_.reset(xmin, ymin, xmax, ymax, 16);
-    edge_octree_.reset(xmin - span, ymin - span, xmax + span, ymax + span, 2 * span, 32);
     // every vertex of the domain starts active: on the front, or free
     for(Face_handle f : domain_faces)
       for(int i = 0; i < 3; ++i) acquire(f->vertex(i));
@@ -841,19 +846,28 @@ private:
     n.edges.clear();
     n.new_edges.clear();
     n.removed_edges.clear();
-    {
-      Phase_scope phase(this, CLOSE_POINT_SEARCH);
-      index_.query(cx, cy, radius, [&n](std::size_t id, double px, double py) {
+    // One search finds the active vertices in the disk and, through the
+    // vertices within their reach, the front edges whose diametral disk
+    // meets it (they may pass through the disk with both end points far
+    // away; the padding is the trees' own).
+    Phase_scope phase(this, CLOSE_POINT_SEARCH);
+    const double pad = 1e-12 * (std::abs(cx) + std::abs(cy));
+    index_.query_with_reach(cx, cy, radius, [this, &n, cx, cy, radius, pad](std::size_t id, double px, double py,
+                                                                           bool in_disk) {
+      if(in_disk) {
         n.vertices.push_back(id);
         n.vertex_xy.push_back({{px, py}});
-      });
-    }
-    ++stats_.point_search_queries;
-    Phase_scope phase(this, CIRCLE_OCTREE);
-    edge_octree_.query(cx, cy, radius, [this, &n](Edge_key k) {
-      const Vid g = source(k), h = target(k);
-      n.edges.push_back(Near_edge{k, x(g), y(g), x(h), y(h)});
+      }
+      for(Vid h : out_[Vid(id)]) {
+        const double hx = x(h), hy = y(h);
+        const double dx = 0.5 * (px + hx) - cx, dy = 0.5 * (py + hy) - cy;
+        const double reach = (0.5 * length(hx - px, hy - py) + radius) * (1 + 1e-9) + pad +
+                             1e-12 * (std::abs(px) + std::abs(py) + std::abs(hx) + std::abs(hy));
+        // written so that an edge whose test cannot be computed is kept
+        if(!(dx * dx + dy * dy > reach * reach)) n.edges.push_back(Near_edge{key(Vid(id), h), px, py, hx, hy});
+      }
     });
+    ++stats_.point_search_queries;
     ++stats_.edge_octree_queries;
   }
 
@@ -1633,7 +1647,6 @@ private:
   std::size_t queue_compactions_ = 0;
   Advancing_front_mesh_2::internal::Dynamic_point_quadtree index_;
   Triangle_octree triangle_octree_;
-  Edge_octree edge_octree_;
   Constraint_octree constraint_octree_;
   double meshed_area_ = 0, domain_area_ = 0;
   Advancing_front_mesh_2::Statistics stats_;

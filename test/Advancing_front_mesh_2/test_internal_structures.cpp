@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <random>
 #include <set>
@@ -150,6 +151,67 @@ AFM_TEST_CASE(test_internal_point_quadtree)
   for(std::size_t i = 0; i < pts.size(); ++i) tree.insert(i, pts[i][0], pts[i][1]);
   AFM_CHECK_MSG(tree.number_of_nodes() == nodes, "merged node blocks were not reused: " << nodes << " -> "
                                                                                         << tree.number_of_nodes());
+}
+
+// The reach of a point (the mesher: its longest outgoing front edge) makes
+// query_with_reach() report it for every disk within that reach, which is
+// how the front edges near a disk are found; reaches go up and down, points
+// come and go, and a few reaches are huge or NaN (reported everywhere).
+AFM_TEST_CASE(test_internal_point_quadtree_reach)
+{
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> coord(0, 1);
+  AFMI::Dynamic_point_quadtree tree;
+  tree.reset(0, 0, 1, 1, 4);
+  const std::size_t n = 2000;
+  std::vector<std::array<double, 2> > pts(n);
+  std::vector<double> reach(n, 0.);
+  std::vector<bool> in(n, false);
+  for(auto& p : pts) p = {{coord(rng), coord(rng)}};
+  pts[0] = {{1.5, -0.25}}; // outside the root box
+  for(int round = 0; round < 8; ++round) {
+    for(std::size_t i = 0; i < n; ++i) {
+      if(!in[i] && rng() % 3 == 0) {
+        tree.insert(i, pts[i][0], pts[i][1]);
+        in[i] = true;
+        reach[i] = 0;
+      } else if(in[i] && rng() % 5 == 0) {
+        tree.remove(i);
+        in[i] = false;
+      }
+      if(in[i] && rng() % 2 == 0) {
+        const unsigned kind = rng() % 100;
+        reach[i] = kind == 0 ? std::numeric_limits<double>::quiet_NaN()
+                 : kind == 1 ? 0.5
+                             : 0.03 * coord(rng);
+        tree.set_reach(i, reach[i]);
+        const double stored = tree.reach(i);
+        AFM_CHECK(std::isnan(reach[i]) ? stored == std::numeric_limits<double>::infinity() : stored == reach[i]);
+      }
+    }
+    for(int q = 0; q < 150; ++q) {
+      const double qx = coord(rng), qy = coord(rng), r = 0.1 * coord(rng);
+      std::vector<std::size_t> got, got_in_disk;
+      tree.query_with_reach(qx, qy, r, [&](std::size_t id, double px, double py, bool in_disk) {
+        AFM_CHECK(px == pts[id][0] && py == pts[id][1]);
+        got.push_back(id);
+        if(in_disk) got_in_disk.push_back(id);
+      });
+      std::sort(got.begin(), got.end());
+      std::sort(got_in_disk.begin(), got_in_disk.end());
+      AFM_CHECK_MSG(std::adjacent_find(got.begin(), got.end()) == got.end(), "duplicate report");
+      for(std::size_t i = 0; i < n; ++i) {
+        const double d = std::hypot(pts[i][0] - qx, pts[i][1] - qy);
+        const bool reported = std::binary_search(got.begin(), got.end(), i);
+        const bool said_in_disk = std::binary_search(got_in_disk.begin(), got_in_disk.end(), i);
+        const double within = std::isnan(reach[i]) ? std::numeric_limits<double>::infinity() : r + reach[i];
+        if(in[i] && d <= within) AFM_CHECK_MSG(reported, "round " << round << ": point " << i << " missed");
+        if(reported) AFM_CHECK_MSG(in[i] && d <= within * (1 + 1e-6) + 1e-9, "point " << i << " reported wrongly");
+        if(in[i] && d <= r) AFM_CHECK_MSG(said_in_disk, "point " << i << " not marked in the disk");
+        if(said_in_disk) AFM_CHECK_MSG(d <= r * (1 + 1e-6) + 1e-9, "point " << i << " marked in the disk wrongly");
+      }
+    }
+  }
 }
 
 AFM_TEST_CASE(test_internal_lifted_circle_octree)

@@ -85,9 +85,11 @@ struct Statistics
   /// point insertions in which step 10 raised the size bound (a broken
   /// triangle was larger than the bound)
   std::size_t size_bound_raised = 0;
-  /// queries of the circle octree (front triangles) and of the front-edge
-  /// diametral-circle octree
+  /// queries of the circle octree (front triangles)
   std::size_t triangle_octree_queries = 0;
+  /// searches for the front edges near a disk (done by the point quadtree,
+  /// through the vertices' reaches) and queries of the constraint octree,
+  /// both for visibility; the name is from when front edges had an octree
   std::size_t edge_octree_queries = 0;
   /// queries of the close-point search structure (the quadtree of active points)
   std::size_t point_search_queries = 0;

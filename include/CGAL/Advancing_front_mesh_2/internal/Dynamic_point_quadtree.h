@@ -49,12 +49,14 @@ class Dynamic_point_quadtree
   struct Entry
   {
     double x, y;
+    double reach; // see set_reach()
     std::size_t id;
   };
 
   struct Node
   {
     std::array<double, 4> box; // x0, y0, x1, y1
+    double max_reach = 0;      // bound on the reaches below (not lowered by removals)
     std::int32_t first_child = no_child;
     std::int32_t parent = -1;
     std::int32_t depth = 0;
@@ -100,7 +102,7 @@ public:
     if(id >= places_.size()) places_.resize(id + 1);
     if(places_[id].node != absent) return;
     ++size_;
-    const Entry e{x, y, id};
+    const Entry e{x, y, 0., id};
     const std::array<double, 4>& root = nodes_[0].box;
     if(!(x >= root[0] && x <= root[2] && y >= root[1] && y <= root[3])) { // also catches NaN
       places_[id] = Place{overflow_node, std::uint32_t(overflow_.size())};
@@ -133,6 +135,54 @@ public:
     --size_;
   }
 
+  /// Sets the reach of point `id` (a non-negative length; NaN counts as
+  /// infinite): query_with_reach() reports the point for every disk that
+  /// comes within its reach. The mesher sets a front vertex's reach to the
+  /// length of its longest outgoing front edge, so that the vertices found
+  /// lead to every front edge that meets a disk.
+  void set_reach(std::size_t id, double reach)
+  {
+    CGAL_precondition(contains(id));
+    if(std::isnan(reach)) reach = std::numeric_limits<double>::infinity();
+    const Place& pl = places_[id];
+    if(pl.node == overflow_node) {
+      overflow_[pl.position].reach = reach;
+      return;
+    }
+    nodes_[pl.node].entries[pl.position].reach = reach;
+    for(std::int32_t n = pl.node; n >= 0 && nodes_[n].max_reach < reach; n = nodes_[n].parent)
+      nodes_[n].max_reach = reach;
+  }
+
+  double reach(std::size_t id) const
+  {
+    CGAL_precondition(contains(id));
+    const Place& pl = places_[id];
+    return (pl.node == overflow_node) ? overflow_[pl.position].reach : nodes_[pl.node].entries[pl.position].reach;
+  }
+
+  /// Calls `f(id, px, py, in_disk)` for the points within `radius` plus
+  /// their reach of (x, y), where `in_disk` tells whether the point is
+  /// within `radius` (both padded slightly; points with non-finite
+  /// coordinates are always reported, as in the disk).
+  template <class Function>
+  void query_with_reach(double x, double y, double radius, Function f) const
+  {
+    const double pad = padding(x, y);
+    const double r = radius * (1 + 1e-9) + pad;
+    const double r2 = r * r;
+    traverse(x, y, radius, true, [&](const Entry& e) {
+      const double dx = e.x - x, dy = e.y - y;
+      const double d2 = dx * dx + dy * dy;
+      if(d2 <= r2 || !std::isfinite(d2)) {
+        f(e.id, e.x, e.y, true);
+        return;
+      }
+      const double reach = (radius + e.reach) * (1 + 1e-9) + pad;
+      if(d2 <= reach * reach) f(e.id, e.x, e.y, false);
+    });
+  }
+
   /// Appends to `out` the ids of the points within `radius` of (x, y)
   /// (padded slightly).
   void query(double x, double y, double radius, std::vector<std::size_t>& out) const
@@ -141,45 +191,53 @@ public:
   }
 
   /// Calls `f(id, px, py)` for the points within `radius` of (x, y)
-  /// (padded slightly).
+  /// (padded slightly; points with non-finite coordinates are always
+  /// reported).
   template <class Function>
   void query(double x, double y, double radius, Function f) const
   {
-    ++number_of_queries_;
-    const double r = radius * (1 + 1e-9) + 1e-12 * (std::abs(x) + std::abs(y)) + abs_pad_;
+    const double r = radius * (1 + 1e-9) + padding(x, y);
     const double r2 = r * r;
-    for(const Entry& e : overflow_) report(e, x, y, r2, f);
-    stack_.clear();
-    stack_.push_back(0);
-    while(!stack_.empty()) {
-      const Node& n = nodes_[stack_.back()];
-      stack_.pop_back();
-      if(n.first_child == no_child) {
-        // points in the tree lie in the root box, so they are finite
-        for(const Entry& e : n.entries) {
-          const double dx = e.x - x, dy = e.y - y;
-          if(dx * dx + dy * dy <= r2) f(e.id, e.x, e.y);
-        }
-        continue;
-      }
-      for(std::int32_t c = n.first_child; c < n.first_child + 4; ++c) {
-        const std::array<double, 4>& b = nodes_[c].box;
-        const double dx = (std::max)({b[0] - x, 0., x - b[2]});
-        const double dy = (std::max)({b[1] - y, 0., y - b[3]});
-        if(dx * dx + dy * dy <= r2) stack_.push_back(c);
-      }
-    }
+    traverse(x, y, radius, false, [&](const Entry& e) {
+      const double dx = e.x - x, dy = e.y - y;
+      const double d2 = dx * dx + dy * dy;
+      if(d2 <= r2 || !std::isfinite(d2)) f(e.id, e.x, e.y);
+    });
   }
 
   std::size_t number_of_queries() const { return number_of_queries_; }
   std::size_t number_of_nodes() const { return nodes_.size(); }
 
 private:
-  template <class Function>
-  static void report(const Entry& e, double x, double y, double r2, Function& f)
+  double padding(double x, double y) const { return 1e-12 * (std::abs(x) + std::abs(y)) + abs_pad_; }
+
+  // Calls visit(entry) for the overflow list and for the leaves whose box
+  // comes within radius (plus the nodes' reach bounds if with_reach) of
+  // (x, y); the caller tests the entries.
+  template <class Visit>
+  void traverse(double x, double y, double radius, bool with_reach, Visit visit) const
   {
-    const double dx = e.x - x, dy = e.y - y;
-    if(dx * dx + dy * dy <= r2 || !std::isfinite(e.x) || !std::isfinite(e.y)) f(e.id, e.x, e.y);
+    ++number_of_queries_;
+    const double pad = padding(x, y);
+    for(const Entry& e : overflow_) visit(e);
+    stack_.clear();
+    stack_.push_back(0);
+    while(!stack_.empty()) {
+      const Node& n = nodes_[stack_.back()];
+      stack_.pop_back();
+      if(n.first_child == no_child) {
+        for(const Entry& e : n.entries) visit(e);
+        continue;
+      }
+      for(std::int32_t c = n.first_child; c < n.first_child + 4; ++c) {
+        const Node& child = nodes_[c];
+        const std::array<double, 4>& b = child.box;
+        const double dx = (std::max)({b[0] - x, 0., x - b[2]});
+        const double dy = (std::max)({b[1] - y, 0., y - b[3]});
+        const double reach = (radius + (with_reach ? child.max_reach : 0.)) * (1 + 1e-9) + pad;
+        if(dx * dx + dy * dy <= reach * reach) stack_.push_back(c);
+      }
+    }
   }
 
   static std::int32_t child_index(const std::array<double, 4>& b, double x, double y)
@@ -199,6 +257,7 @@ private:
         std::vector<Entry>().swap(nodes_[c].entries);
       free_blocks_.push_back(node.first_child);
       node.first_child = no_child;
+      node.max_reach = 0;
       n = node.parent;
     }
   }
@@ -220,6 +279,7 @@ private:
       child.depth = nodes_[n].depth + 1;
       child.parent = n;
       child.first_child = no_child;
+      child.max_reach = 0;
       child.box = {{(c & 1) ? mx : b[0], (c & 2) ? my : b[1], (c & 1) ? b[2] : mx, (c & 2) ? b[3] : my}};
     }
     std::vector<Entry> moved;
@@ -229,6 +289,7 @@ private:
       const std::int32_t c = first + child_index(b, e.x, e.y);
       places_[e.id] = Place{c, std::uint32_t(nodes_[c].entries.size())};
       nodes_[c].entries.push_back(e);
+      nodes_[c].max_reach = (std::max)(nodes_[c].max_reach, e.reach);
     }
     // a child that is still too full splits on its next insertion
   }

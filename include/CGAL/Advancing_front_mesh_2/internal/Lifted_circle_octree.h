@@ -33,8 +33,8 @@ namespace internal {
 // [x0,x1] x [y0,y1] x [r0,r1] can hold such a point only if
 // r1 >= distance(q, [x0,x1] x [y0,y1]); all other octants are pruned.
 // The same query with an inflated radius s (|q - c| < r + s) finds the
-// circles that meet the disk of radius s about q, which is how front edges
-// (stored as diametral circles) near a search disk are found.
+// circles that meet the disk of radius s about q (the constraints, stored
+// as diametral circles, near a segment).
 //
 // Coordinates are doubles: the tree is a conservative filter (the test is
 // padded by a relative epsilon); callers decide with exact predicates.
