@@ -38,6 +38,24 @@ AFM_TEST_CASE(test_square_with_hole_quality)
                 "largest front " << r.stats.largest_front << " of " << r.report.n_vertices << " vertices");
 }
 
+// Pockets of the front meshed first: the front stays smaller than in plain
+// shortest-first order (at h = 0.003, 2.7k edges at most against 9.1k), the
+// mesh is as valid, and the front's loops stay consistent through the
+// re-queued pocket edges (checked every 97 steps).
+AFM_TEST_CASE(test_pocket_priority)
+{
+  const double h = 0.003;
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, h);
+  const auto plain = mesh_and_check<CDT>(in, uniform<K>(h), "square with hole h=0.003, shortest first", 0, false);
+  const auto pockets = mesh_and_check<CDT>(in, uniform<K>(h), "square with hole h=0.003, pockets first", 97, true);
+  AFM_CHECK_MSG(plain.stats.pockets == 0, plain.stats.pockets);
+  AFM_CHECK_MSG(pockets.stats.pockets > 0, pockets.stats.pockets);
+  AFM_CHECK_MSG(2 * pockets.stats.largest_front < plain.stats.largest_front,
+                "largest front " << pockets.stats.largest_front << " with pockets first, "
+                                 << plain.stats.largest_front << " without");
+  AFM_CHECK_MSG(pockets.report.mean_radius_ratio > 0.99, pockets.report.mean_radius_ratio);
+}
+
 AFM_TEST_CASE(test_square_with_hole_front_invariants)
 {
   // step by step, checking the front's loops after every step

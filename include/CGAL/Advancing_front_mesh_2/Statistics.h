@@ -97,6 +97,10 @@ struct Statistics
   std::size_t incircle_tests = 0;
   /// largest number of front edges at any time
   std::size_t largest_front = 0;
+  /// pockets found: loops of the front of at most 1024 edges found closed
+  /// after a step that split or joined loops, whose edges are then
+  /// processed before all others (see `set_pocket_priority()`)
+  std::size_t pockets = 0;
   /// largest number of active vertices (front vertices and free points),
   /// the only ones the mesher keeps a record of
   std::size_t largest_active_vertices = 0;

@@ -113,13 +113,16 @@ move. Each movable vertex, in turn, is tried at the centroid of its
 neighbours, then halfway there; a move is accepted only if every triangle
 around the vertex stays positively oriented (exact predicate of the
 triangulation's traits) and neither the smallest radius ratio 2r/R nor the
-smallest angle around the vertex decreases (computed in double precision), so
-smoothing never inverts a triangle and never makes the worst triangle of a
-star worse by either measure. Each pass of
-smoothing is followed by Lawson's flips on the edges between in-domain faces
-until the triangulation is constrained Delaunay again; the input segments
-are never flipped. Few edges need flipping after smoothing, as the paper
-notes.
+smallest angle around the vertex decreases (computed in double precision).
+An accepted move is followed at once by Lawson's flips about the vertex, on
+the edges between in-domain faces, until the triangulation is constrained
+Delaunay again (the input segments are never flipped); if a triangle the
+flips made is worse, by either measure, than the worst of the star before the
+move, the flips are undone and the vertex goes back. So smoothing never
+inverts a triangle and never makes the worst triangle of the mesh worse by
+either measure (Lawson's flips alone could lower the smallest radius ratio).
+Few edges need flipping after smoothing, as the paper notes; a final Lawson
+pass after each pass of smoothing finds nothing left to flip.
 
 Works on the result of `CGAL::advancing_front_mesh_2()` and on a CGAL Mesh_2
 result (`CGAL::refine_Delaunay_mesh_2()`) alike.
@@ -154,6 +157,7 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
   typedef typename CDT::Vertex_handle Vertex_handle;
   typedef typename CDT::Face_circulator Face_circulator;
   typedef typename CDT::Vertex_circulator Vertex_circulator;
+  typedef typename CDT::Face_handle Face_handle;
   typedef typename CDT::Geom_traits::FT FT;
   typedef typename CDT::Point Point;
 
@@ -202,6 +206,75 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
     return worst;
   };
 
+  // Lawson's flips after the move of v: the edges of its star and of the
+  // star's ring first, then those of each flipped pair. The flips are
+  // recorded: the two faces of each, whose triangles changed, and the new
+  // diagonal, by its end points, to undo them (a flip and its undoing may
+  // leave the two triangles in each other's face records, so later undoings
+  // cannot go by face handles).
+  std::vector<std::pair<Face_handle, Face_handle> > flipped;
+  std::vector<std::pair<Vertex_handle, Vertex_handle> > diagonals;
+  std::vector<std::pair<Face_handle, int> > to_check;
+  std::size_t pass_flips = 0;
+  auto flip_about = [&](Vertex_handle v) {
+    flipped.clear();
+    diagonals.clear();
+    to_check.clear();
+    Face_circulator fc = cdt.incident_faces(v), done = fc;
+    do {
+      for(int k = 0; k < 3; ++k) to_check.emplace_back(fc, k);
+    } while(++fc != done);
+    while(!to_check.empty()) {
+      Face_handle f = to_check.back().first; // flip() takes a reference
+      const int i = to_check.back().second;
+      to_check.pop_back();
+      const Face_handle g = f->neighbor(i);
+      if(!f->is_in_domain() || cdt.is_infinite(f) || cdt.is_infinite(g) || !g->is_in_domain()) continue;
+      if(!cdt.is_flipable(f, i, false)) continue;
+      cdt.flip(f, i);
+      flipped.emplace_back(f, g);
+      const int j = f->index(g);
+      diagonals.emplace_back(f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j)));
+      for(Face_handle h : {f, g})
+        for(int k = 0; k < 3; ++k)
+          if(h->neighbor(k) != f && h->neighbor(k) != g) to_check.emplace_back(h, k);
+    }
+    return flipped.size();
+  };
+  auto undo_flips = [&](std::size_t made) {
+    for(std::size_t k = made; k-- > 0;) {
+      // flipping the new diagonal back
+      Face_handle f;
+      int i = 0;
+      const bool found = cdt.is_edge(diagonals[k].first, diagonals[k].second, f, i);
+      CGAL_assertion(found);
+      CGAL_USE(found);
+      cdt.flip(f, i);
+    }
+  };
+  // the worst radius ratio and smallest angle of the faces about v and of
+  // the faces the flips changed (some of which may have left v's star)
+  auto worst_of_changed_faces = [&](Vertex_handle v) {
+    std::pair<double, double> worst(1., 1.);
+    auto account = [&worst](Face_handle f) {
+      double x[3], y[3];
+      for(int k = 0; k < 3; ++k) {
+        x[k] = CGAL::to_double(f->vertex(k)->point().x());
+        y[k] = CGAL::to_double(f->vertex(k)->point().y());
+      }
+      worst.first = (std::min)(worst.first, Advancing_front_mesh_2::internal::radius_ratio(x[0], y[0], x[1], y[1], x[2], y[2]));
+      worst.second = (std::min)(worst.second, Advancing_front_mesh_2::internal::squared_sine_of_smallest_angle(
+                                                x[0], y[0], x[1], y[1], x[2], y[2]));
+    };
+    Face_circulator fc = cdt.incident_faces(v), done = fc;
+    do account(fc); while(++fc != done);
+    for(const auto& fg : flipped) {
+      account(fg.first);
+      account(fg.second);
+    }
+    return worst;
+  };
+
   for(std::size_t pass = 0; pass < passes; ++pass) {
     for(Vertex_handle v : movable) {
       ring.clear();
@@ -227,14 +300,26 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
         const std::pair<double, double> after = star_quality(candidate, valid);
         if(valid && after.first >= before.first && after.second >= before.second) {
           v->set_point(candidate);
-          moved = true;
-          break;
+          // The move may call for flips, and Lawson's flips keep the
+          // smallest angle from decreasing but not the radius ratio: the
+          // flips are made now, and the move is undone (flips included)
+          // if a triangle they made is worse than the star's worst before.
+          const std::size_t made = flip_about(v);
+          if(worst_of_changed_faces(v) >= before) {
+            moved = true;
+            pass_flips += made;
+            break;
+          }
+          undo_flips(made);
+          v->set_point(old);
         }
         ++stats.rejected_moves;
       }
       if(moved) ++stats.moves;
     }
-    const std::size_t flips = Advancing_front_mesh_2::internal::restore_constrained_delaunay(cdt);
+    // nothing is expected to need a flip here: kept as a safety net
+    const std::size_t flips = pass_flips + Advancing_front_mesh_2::internal::restore_constrained_delaunay(cdt);
+    pass_flips = 0;
     stats.flips += flips;
     stats.flips_per_pass.push_back(flips);
     ++stats.passes;

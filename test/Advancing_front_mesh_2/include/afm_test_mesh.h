@@ -125,13 +125,14 @@ struct Result
 // front built a Delaunay mesh by itself (no repair flip).
 template <class CDT, class Sizing>
 Result mesh_and_check(const Poly_data& in, const Sizing& sizing, const std::string& label,
-                      std::size_t check_front_every = 0)
+                      std::size_t check_front_every = 0, bool pocket_priority = true)
 {
   CDT cdt;
   build_cdt(cdt, in);
   auto seeds = seeds_of<CDT>(in);
   CGAL::Advancing_front_mesher_2<CDT, Sizing> mesher(cdt, sizing);
   mesher.set_seeds(seeds.begin(), seeds.end());
+  mesher.set_pocket_priority(pocket_priority);
   const auto start = std::chrono::steady_clock::now();
   if(check_front_every == 0) {
     mesher.refine_mesh();
@@ -151,7 +152,7 @@ Result mesh_and_check(const Poly_data& in, const Sizing& sizing, const std::stri
   r.report = afm_check::check_mesh(to_pslg(in), r.mesh);
   std::cout << "  " << label << ": " << r.report.summary() << ", " << r.seconds << " s, inserted "
             << r.stats.points_inserted << ", forced " << r.stats.forced_closures << ", largest front "
-            << r.stats.largest_front << "\n";
+            << r.stats.largest_front << ", pockets " << r.stats.pockets << "\n";
   AFM_CHECK_MSG(r.report.ok, label << ": " << r.report.summary());
   AFM_CHECK_MSG(r.stats.delaunay_repair_flips == 0,
                 label << ": " << r.stats.delaunay_repair_flips << " edges needed a Delaunay repair flip");
