@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
+#include <CGAL/use.h>
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +123,10 @@ move, the flips are undone and the vertex goes back. So smoothing never
 inverts a triangle and never makes the worst triangle of the mesh worse by
 either measure (Lawson's flips alone could lower the smallest radius ratio).
 Few edges need flipping after smoothing, as the paper notes; a final Lawson
-pass after each pass of smoothing finds nothing left to flip.
+pass after each pass of smoothing finds nothing left to flip. These
+guarantees assume that the input is constrained Delaunay over its in-domain
+faces, as the results of `CGAL::advancing_front_mesh_2()` and of Mesh_2 are;
+otherwise the first pass's final Lawson flips make it so, unguarded.
 
 Works on the result of `CGAL::advancing_front_mesh_2()` and on a CGAL Mesh_2
 result (`CGAL::refine_Delaunay_mesh_2()`) alike.
@@ -305,7 +309,10 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
           // flips are made now, and the move is undone (flips included)
           // if a triangle they made is worse than the star's worst before.
           const std::size_t made = flip_about(v);
-          if(worst_of_changed_faces(v) >= before) {
+          // without flips the star was judged above (and the face order
+          // could change the last bit of a ratio)
+          const std::pair<double, double> changed = made == 0 ? after : worst_of_changed_faces(v);
+          if(changed.first >= before.first && changed.second >= before.second) {
             moved = true;
             pass_flips += made;
             break;
