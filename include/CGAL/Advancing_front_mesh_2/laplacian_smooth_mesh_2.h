@@ -64,35 +64,43 @@ inline double squared_sine_of_smallest_angle(double ax, double ay, double bx, do
   return std::isfinite(q) ? q : 0.;
 }
 
-// Lawson's flips on the edges between two in-domain faces until every such
-// edge is locally Delaunay (strictly: cocircular quadrilaterals are left
-// alone). Constrained edges are never flipped. Returns the number of flips.
-template <class CDT>
-std::size_t restore_constrained_delaunay(CDT& cdt)
+// Lawson's flips, starting from the edges on `stack`, on the edges between
+// two finite in-domain faces until every edge reached is locally Delaunay
+// (strictly: cocircular quadrilaterals are left alone). Constrained edges are
+// never flipped. Calls `on_flip(f, g)` after each flip, f and g the two faces
+// (now sharing the new diagonal). Returns the number of flips.
+template <class CDT, class On_flip>
+std::size_t lawson_flips(CDT& cdt, std::vector<typename CDT::Edge>& stack, const On_flip& on_flip)
 {
   typedef typename CDT::Face_handle Face_handle;
-  typedef typename CDT::Edge Edge;
-  std::vector<Edge> stack;
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if(f->is_in_domain())
-      for(int i = 0; i < 3; ++i) stack.emplace_back(f, i);
   std::size_t flips = 0;
   while(!stack.empty()) {
-    Edge e = stack.back();
+    Face_handle f = stack.back().first; // flip() takes a reference
+    const int i = stack.back().second;
     stack.pop_back();
-    Face_handle f = e.first;
-    const int i = e.second;
     const Face_handle g = f->neighbor(i);
-    if(!f->is_in_domain() || !g->is_in_domain() || cdt.is_infinite(g)) continue;
+    if(!f->is_in_domain() || cdt.is_infinite(f) || cdt.is_infinite(g) || !g->is_in_domain()) continue;
     if(!cdt.is_flipable(f, i, false)) continue;
     cdt.flip(f, i);
     ++flips;
+    on_flip(f, g);
     // the four edges of the new quadrilateral's sides
     for(Face_handle h : {f, g})
       for(int k = 0; k < 3; ++k)
         if(h->neighbor(k) != f && h->neighbor(k) != g) stack.emplace_back(h, k);
   }
   return flips;
+}
+
+// Lawson's flips over the whole triangulation's in-domain faces.
+template <class CDT>
+std::size_t restore_constrained_delaunay(CDT& cdt)
+{
+  std::vector<typename CDT::Edge> stack;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain())
+      for(int i = 0; i < 3; ++i) stack.emplace_back(f, i);
+  return lawson_flips(cdt, stack, [](typename CDT::Face_handle, typename CDT::Face_handle) {});
 }
 
 } // namespace internal
@@ -218,7 +226,7 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
   // cannot go by face handles).
   std::vector<std::pair<Face_handle, Face_handle> > flipped;
   std::vector<std::pair<Vertex_handle, Vertex_handle> > diagonals;
-  std::vector<std::pair<Face_handle, int> > to_check;
+  std::vector<typename CDT::Edge> to_check;
   std::size_t pass_flips = 0;
   auto flip_about = [&](Vertex_handle v) {
     flipped.clear();
@@ -228,22 +236,11 @@ laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::defaul
     do {
       for(int k = 0; k < 3; ++k) to_check.emplace_back(fc, k);
     } while(++fc != done);
-    while(!to_check.empty()) {
-      Face_handle f = to_check.back().first; // flip() takes a reference
-      const int i = to_check.back().second;
-      to_check.pop_back();
-      const Face_handle g = f->neighbor(i);
-      if(!f->is_in_domain() || cdt.is_infinite(f) || cdt.is_infinite(g) || !g->is_in_domain()) continue;
-      if(!cdt.is_flipable(f, i, false)) continue;
-      cdt.flip(f, i);
+    return Advancing_front_mesh_2::internal::lawson_flips(cdt, to_check, [&](Face_handle f, Face_handle g) {
       flipped.emplace_back(f, g);
       const int j = f->index(g);
       diagonals.emplace_back(f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j)));
-      for(Face_handle h : {f, g})
-        for(int k = 0; k < 3; ++k)
-          if(h->neighbor(k) != f && h->neighbor(k) != g) to_check.emplace_back(h, k);
-    }
-    return flipped.size();
+    });
   };
   auto undo_flips = [&](std::size_t made) {
     for(std::size_t k = made; k-- > 0;) {
