@@ -331,6 +331,7 @@ int run(const Options& opt)
        << ", \"pockets\": " << st.pockets
        << ", \"largest_live_triangles\": " << st.largest_live_triangles
        << ", \"largest_active_vertices\": " << st.largest_active_vertices
+       << ", \"memory_compactions\": " << st.memory_compactions
        << ", \"delaunay_repair_flips\": " << st.delaunay_repair_flips << "}, ";
     os << "\"quality\": {";
     json_number(os, "min_radius_ratio", q.min_radius_ratio);

@@ -364,13 +364,31 @@ public:
   Checks the front invariants (for tests and debugging, O(front size)):
   every front vertex has as many incoming as outgoing front edges, every
   front edge is recorded at both end points, and every front edge's face on
-  the meshed side really has that edge.
+  the meshed side really has that edge; and the records of the active
+  vertices (which are renumbered when memory is released) agree: every id
+  not free names a vertex that maps back to it, with its coordinates and a
+  place in the point quadtree.
   */
   bool is_front_valid() const
   {
+    std::vector<bool> is_free(vertex_.size(), false);
+    for(Vid v : free_ids_) is_free[v] = true;
+    for(Vid v : released_ids_) is_free[v] = true;
+    std::size_t active = 0;
+    for(Vid v = 0; v < vertex_.size(); ++v) {
+      if(is_free[v]) continue;
+      ++active;
+      const Vid* id = vid_.find(&*vertex_[v]);
+      if(id == nullptr || *id != v || !index_.contains(v)) return false;
+      if(xy_[v][0] != CGAL::to_double(vertex_[v]->point().x()) ||
+         xy_[v][1] != CGAL::to_double(vertex_[v]->point().y()))
+        return false;
+    }
+    if(active != vid_.size()) return false;
     std::size_t counted = 0;
     for(Vid v = 0; v < out_.size(); ++v) {
       if(out_[v].size() != in_[v].size()) return false;
+      if(is_free[v] && !out_[v].empty()) return false;
       for(Vid w : out_[v]) {
         const Front_edge* it = front_.find(key(v, w));
         if(it == nullptr) return false;
@@ -549,6 +567,75 @@ private:
   {
     free_ids_.insert(free_ids_.end(), released_ids_.begin(), released_ids_.end());
     released_ids_.clear();
+  }
+
+  // ------------------------------------------------------------- memory
+  // The front rises and falls: with uniform sizes it grows to about 1% of
+  // the mesh's edges and shrinks to nothing at the end, when the
+  // triangulation is largest. Containers keep their capacity, so without
+  // this the run's peak would be the triangulation plus the structures of
+  // the largest front (4 bytes per triangle at 1M triangles). Each
+  // structure is rebuilt at its current size once it uses less than a
+  // quarter (hash tables: an eighth) of what it holds; the rebuilds cost
+  // O(front) and come at geometrically spaced sizes.
+  void release_unused_memory()
+  {
+    if(vertex_.size() >= 64 && 4 * vid_.size() < vertex_.size()) compact_vertex_ids();
+    front_.shrink_if_sparse();
+    face_records_.shrink_if_sparse();
+    if(triangle_octree_.is_sparse())
+      triangle_octree_.rebuild([this](Face_handle f, std::size_t item) {
+        Face_record* r = face_records_.find(&*f);
+        CGAL_assertion(r != nullptr);
+        r->circle_item = item;
+      });
+  }
+
+  // Renumbers the active vertices 0..n-1 (keeping their order, so that
+  // nothing that depends on ids changes order) and rebuilds everything
+  // indexed or keyed by vertex ids. Only between steps: ids gathered
+  // during a step must keep naming the same vertex.
+  void compact_vertex_ids()
+  {
+    CGAL_precondition(released_ids_.empty());
+    std::vector<Vid> new_id(vertex_.size(), no_vertex);
+    for(Vid v : free_ids_) new_id[v] = 0; // marks the free ids
+    Vid n = 0;
+    for(Vid v = 0; v < new_id.size(); ++v) new_id[v] = (new_id[v] == no_vertex) ? n++ : no_vertex;
+    CGAL_assertion(n == vid_.size());
+
+    std::vector<Vertex_handle> vertex(n);
+    std::vector<std::array<double, 2> > xy(n);
+    std::vector<Advancing_front_mesh_2::internal::Compact_id_list> out(n), in(n);
+    for(Vid v = 0; v < new_id.size(); ++v) {
+      const Vid w = new_id[v];
+      if(w == no_vertex) continue;
+      vertex[w] = vertex_[v];
+      xy[w] = xy_[v];
+      for(Vid t : out_[v]) out[w].push_back(new_id[t]);
+      for(Vid s : in_[v]) in[w].push_back(new_id[s]);
+    }
+    vertex_.swap(vertex);
+    xy_.swap(xy);
+    out_.swap(out);
+    in_.swap(in);
+    std::vector<Vid>().swap(free_ids_);
+
+    Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_vertex*, Vid> vid(nullptr);
+    vid.reserve(n);
+    for(Vid w = 0; w < n; ++w) vid.insert(&*vertex_[w], w);
+    vid_ = std::move(vid);
+
+    Advancing_front_mesh_2::internal::Flat_hash_map<Edge_key, Front_edge> front(~Edge_key(0));
+    front.reserve(front_.size());
+    front_.for_each([&](Edge_key k, const Front_edge& fe) {
+      front.insert(key(new_id[source(k)], new_id[target(k)]), fe);
+    });
+    front_ = std::move(front);
+
+    index_.rebuild(new_id);
+    compact_queue(); // the queue's keys name vertices too
+    ++stats_.memory_compactions;
   }
 
   static Circle circle_of(double ax, double ay, double bx, double by, double cx, double cy)
@@ -758,6 +845,7 @@ private:
       constraint_octree_.insert(0.5 * (x(p.u) + x(p.v)), 0.5 * (y(p.u) + y(p.v)),
                                 0.5 * length(dx, dy), std::make_pair(vertex_[p.u], vertex_[p.v]));
     }
+    constraint_octree_.shrink_to_fit();
     for(const Pending& p : pending) add_front_edge(p.u, p.v, p.behind, p.index, p.constrained);
     if(front_.empty()) finished_ = true;
   }
@@ -1280,6 +1368,7 @@ private:
   bool step()
   {
     recycle_released_ids();
+    release_unused_memory();
     while(!queue_.empty()) {
       const Queue_entry e = queue_.top();
       queue_.pop();

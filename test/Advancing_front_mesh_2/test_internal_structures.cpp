@@ -305,3 +305,133 @@ AFM_TEST_CASE(test_internal_lifted_circle_octree)
                   "nested, query " << q);
   }
 }
+
+// Memory release: once the front has shrunk, the hash map shrinks and the
+// trees are rebuilt at their current size (the trees renaming their items),
+// and they answer as before.
+AFM_TEST_CASE(test_internal_memory_release)
+{
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> coord(0, 1);
+
+  // hash map: grown to 8192 slots, shrunk to a quarter-full table
+  const std::uint64_t empty = ~std::uint64_t(0);
+  AFMI::Flat_hash_map<std::uint64_t, int> map(empty);
+  for(int i = 0; i < 5000; ++i) map.insert(std::uint64_t(i) * 7919, i);
+  const std::size_t full = map.memory();
+  AFM_CHECK(!map.shrink_if_sparse());
+  for(int i = 100; i < 5000; ++i) AFM_CHECK(map.erase(std::uint64_t(i) * 7919));
+  AFM_CHECK(map.shrink_if_sparse());
+  AFM_CHECK_MSG(8 * map.memory() <= full, map.memory() << " bytes of " << full);
+  AFM_CHECK(!map.shrink_if_sparse());
+  for(int i = 0; i < 5000; ++i) {
+    const int* v = map.find(std::uint64_t(i) * 7919);
+    AFM_CHECK_MSG((v != nullptr) == (i < 100), "key " << i);
+    if(v != nullptr) AFM_CHECK(*v == i);
+  }
+  map.reserve(3000);
+  const std::size_t reserved = map.memory();
+  for(int i = 100; i < 3000; ++i) map.insert(std::uint64_t(i) * 7919, i);
+  AFM_CHECK(map.memory() == reserved && map.size() == 3000);
+
+  // point quadtree: a swept band of points left, renamed in reverse order
+  AFMI::Dynamic_point_quadtree points;
+  points.reset(0, 0, 1, 1, 4);
+  const std::size_t n = 3000;
+  std::vector<std::array<double, 2> > xy(n);
+  std::vector<double> reach(n, 0.);
+  std::vector<bool> live(n, false);
+  for(std::size_t i = 0; i < n; ++i) {
+    xy[i] = {{coord(rng), coord(rng)}};
+    if(i == 0) xy[i] = {{1.5, 0.5}}; // the overflow list
+    points.insert(i, xy[i][0], xy[i][1]);
+    if(i % 3 == 0) reach[i] = 0.05 * coord(rng);
+    if(i == 3) reach[i] = std::numeric_limits<double>::infinity();
+    if(reach[i] != 0) points.set_reach(i, reach[i]);
+    live[i] = true;
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    if(xy[i][0] < 0.9 && i != 3 && i != 0) {
+      points.remove(i);
+      live[i] = false;
+    }
+  std::vector<std::size_t> new_id(n, std::size_t(-1)), old_id;
+  for(std::size_t i = n; i-- > 0;)
+    if(live[i]) {
+      new_id[i] = old_id.size();
+      old_id.push_back(i);
+    }
+  const std::size_t nodes_before = points.number_of_nodes();
+  points.rebuild(new_id);
+  AFM_CHECK(points.size() == old_id.size());
+  AFM_CHECK_MSG(points.number_of_nodes() < nodes_before, points.number_of_nodes() << " nodes, " << nodes_before << " before");
+  for(std::size_t w = 0; w < old_id.size(); ++w) {
+    AFM_CHECK(points.contains(w));
+    AFM_CHECK_MSG(points.reach(w) == reach[old_id[w]], "point " << old_id[w]);
+  }
+  for(int q = 0; q < 200; ++q) {
+    const double qx = coord(rng), qy = coord(rng), r = 0.1 * coord(rng);
+    std::vector<std::pair<std::size_t, bool> > got;
+    points.query_with_reach(qx, qy, r, [&got](std::size_t id, double, double, bool in) { got.push_back({id, in}); });
+    std::sort(got.begin(), got.end());
+    for(std::size_t w = 0; w < old_id.size(); ++w) {
+      const std::size_t i = old_id[w];
+      const double d = std::hypot(xy[i][0] - qx, xy[i][1] - qy);
+      auto it = std::lower_bound(got.begin(), got.end(), std::make_pair(w, false));
+      const bool reported = it != got.end() && it->first == w;
+      if(d <= r + reach[i]) AFM_CHECK_MSG(reported, "query " << q << ": point " << i << " missed");
+      if(d <= r) AFM_CHECK_MSG(reported && it->second, "query " << q << ": point " << i << " not in the disk");
+    }
+    for(const auto& g : got) AFM_CHECK_MSG(g.first < old_id.size(), "unknown id " << g.first);
+  }
+
+  // circle octree: the live circles get new items, named to the caller
+  AFMI::Lifted_circle_octree<int> circles;
+  circles.reset(-1, -1, 2, 2, 3, 4);
+  struct C { double x, y, r; std::size_t item; bool in; };
+  std::vector<C> cs(2500);
+  for(std::size_t i = 0; i < cs.size(); ++i) {
+    cs[i] = C{coord(rng), coord(rng), 0.03 * coord(rng), 0, true};
+    if(i == 0) cs[i].r = 10; // the overflow list
+    cs[i].item = circles.insert(cs[i].x, cs[i].y, cs[i].r, int(i));
+  }
+  AFM_CHECK(!circles.is_sparse());
+  for(std::size_t i = 1; i < cs.size(); ++i)
+    if(cs[i].x < 0.85) {
+      circles.remove(cs[i].item);
+      cs[i].in = false;
+    }
+  AFM_CHECK(circles.is_sparse());
+  const std::size_t octree_nodes_before = circles.number_of_nodes();
+  std::vector<int> renamed(cs.size(), 0);
+  std::set<std::size_t> items;
+  circles.rebuild([&](int payload, std::size_t item) {
+    ++renamed[payload];
+    cs[payload].item = item;
+    items.insert(item);
+  });
+  std::size_t live_circles = 0;
+  for(std::size_t i = 0; i < cs.size(); ++i) {
+    live_circles += cs[i].in;
+    AFM_CHECK_MSG(renamed[i] == (cs[i].in ? 1 : 0), "circle " << i << " renamed " << renamed[i] << " times");
+    if(cs[i].in) AFM_CHECK(circles.payload(cs[i].item) == int(i));
+  }
+  AFM_CHECK(items.size() == live_circles && circles.size() == live_circles && !circles.is_sparse());
+  AFM_CHECK_MSG(circles.number_of_nodes() < octree_nodes_before,
+                circles.number_of_nodes() << " nodes, " << octree_nodes_before << " before");
+  for(int q = 0; q < 200; ++q) {
+    const double qx = coord(rng), qy = coord(rng), inflate = (q % 2) ? 0.05 * coord(rng) : 0.;
+    std::vector<int> got;
+    circles.query(qx, qy, inflate, [&got](int i) { got.push_back(i); });
+    std::sort(got.begin(), got.end());
+    for(std::size_t i = 0; i < cs.size(); ++i) {
+      const bool reported = std::binary_search(got.begin(), got.end(), int(i));
+      const double d = std::hypot(cs[i].x - qx, cs[i].y - qy);
+      if(cs[i].in && d < cs[i].r + inflate) AFM_CHECK_MSG(reported, "query " << q << ": circle " << i << " missed");
+      if(reported) AFM_CHECK_MSG(cs[i].in, "query " << q << ": removed circle " << i << " reported");
+    }
+  }
+  for(const C& c : cs)
+    if(c.in) circles.remove(c.item);
+  AFM_CHECK(circles.size() == 0);
+}

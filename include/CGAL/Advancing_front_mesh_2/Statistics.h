@@ -101,6 +101,10 @@ struct Statistics
   /// after a step that split or joined loops, whose edges are then
   /// processed before all others (see `set_pocket_priority()`)
   std::size_t pockets = 0;
+  /// times the active vertices were renumbered and the structures keyed by
+  /// them rebuilt, to release the memory of a front that has shrunk to a
+  /// quarter of its largest size since the last time
+  std::size_t memory_compactions = 0;
   /// largest number of active vertices (front vertices and free points),
   /// the only ones the mesher keeps a record of
   std::size_t largest_active_vertices = 0;

@@ -135,6 +135,32 @@ public:
     --size_;
   }
 
+  /// Renames the points (point `id` becomes `new_id[id]`, ids absent from
+  /// the tree are not read) and rebuilds the tree for the points it holds,
+  /// in memory proportional to their number: the node and id arrays
+  /// otherwise keep the size of the largest front.
+  template <class Id_map>
+  void rebuild(const Id_map& new_id)
+  {
+    std::vector<Entry> all(overflow_);
+    all.reserve(size_);
+    for(const Node& n : nodes_)
+      if(n.first_child == no_child) all.insert(all.end(), n.entries.begin(), n.entries.end());
+    const std::array<double, 4> box = nodes_[0].box;
+    // clear() would keep the capacity
+    std::vector<Node>().swap(nodes_);
+    std::vector<std::int32_t>().swap(free_blocks_);
+    std::vector<Place>().swap(places_);
+    std::vector<Entry>().swap(overflow_);
+    std::vector<std::int32_t>().swap(stack_);
+    reset(box[0], box[1], box[2], box[3], bucket_size_, max_depth_);
+    for(const Entry& e : all) {
+      const std::size_t id = new_id[e.id];
+      insert(id, e.x, e.y);
+      if(e.reach != 0) set_reach(id, e.reach);
+    }
+  }
+
   /// Sets the reach of point `id` (a non-negative length; NaN counts as
   /// infinite): query_with_reach() reports the point for every disk that
   /// comes within its reach. The mesher sets a front vertex's reach to the

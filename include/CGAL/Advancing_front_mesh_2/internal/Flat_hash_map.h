@@ -99,6 +99,26 @@ public:
     return true;
   }
 
+  /// Gives the table room for `n` entries without growing.
+  void reserve(std::size_t n)
+  {
+    std::size_t capacity = slots_.size();
+    while(4 * n > 3 * capacity) capacity *= 2;
+    if(capacity != slots_.size()) rehash(capacity);
+  }
+
+  /// Halves the table until it is at least a quarter full, once it is less
+  /// than an eighth full: the table follows the front as it shrinks instead
+  /// of keeping the size of the largest front. Returns whether it shrank.
+  bool shrink_if_sparse()
+  {
+    if(slots_.size() <= 16 || 8 * size_ >= slots_.size()) return false;
+    std::size_t capacity = slots_.size();
+    while(capacity > 16 && 4 * size_ < capacity / 2) capacity /= 2;
+    rehash(capacity);
+    return true;
+  }
+
   /// Calls `f(key, value)` for every entry.
   template <class Function>
   void for_each(Function f) const
@@ -130,12 +150,17 @@ private:
     return slots_[i].second;
   }
 
-  void grow()
+  void grow() { rehash(2 * slots_.size()); }
+
+  // capacity: a power of two, at least 16, with room for the entries
+  void rehash(std::size_t capacity)
   {
-    std::vector<Slot> old(2 * slots_.size(), Slot(empty_, Value()));
+    CGAL_precondition(capacity >= 16 && (capacity & (capacity - 1)) == 0 && size_ < capacity);
+    std::vector<Slot> old(capacity, Slot(empty_, Value()));
     old.swap(slots_);
-    mask_ = slots_.size() - 1;
-    --shift_;
+    mask_ = capacity - 1;
+    shift_ = 64;
+    for(std::size_t c = capacity; c > 1; c /= 2) --shift_;
     for(Slot& s : old)
       if(s.first != empty_) place(s.first, s.second);
   }

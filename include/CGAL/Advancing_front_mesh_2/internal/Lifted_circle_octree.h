@@ -187,6 +187,50 @@ public:
     --size_;
   }
 
+  /// Whether most of the memory the tree holds is left over from a time
+  /// when it held more circles (then `rebuild()` releases it).
+  bool is_sparse() const { return items_.size() >= 256 && 4 * size_ < items_.size(); }
+
+  /// Rebuilds the tree for the circles it holds, in memory proportional to
+  /// their number: the item, node and free-list arrays otherwise keep the
+  /// size of the largest front until the end of the run. The items are
+  /// renumbered; `renamed(payload, new_id)` is called for each of them.
+  template <class Renamed>
+  void rebuild(Renamed renamed)
+  {
+    struct Live { Entry entry; Payload payload; };
+    std::vector<Live> live;
+    live.reserve(size_);
+    for(Item_id id = 0; id < items_.size(); ++id) {
+      const Item& it = items_[id];
+      if(!it.alive) continue;
+      const Entry& e = (it.node == overflow_node) ? overflow_[it.position] : nodes_[it.node].entries[it.position];
+      live.push_back(Live{e, it.payload});
+    }
+    const std::array<double, 6> box = nodes_[0].box;
+    // clear() would keep the capacity
+    std::vector<Node>().swap(nodes_);
+    std::vector<int>().swap(free_blocks_[0]);
+    std::vector<int>().swap(free_blocks_[1]);
+    std::vector<Item>().swap(items_);
+    std::vector<Item_id>().swap(free_items_);
+    std::vector<Entry>().swap(overflow_);
+    std::vector<int>().swap(stack_);
+    reset(box[0], box[1], box[3], box[4], box[5], bucket_size_, max_depth_);
+    items_.reserve(live.size());
+    for(const Live& l : live) renamed(l.payload, insert(l.entry.x, l.entry.y, l.entry.r, l.payload));
+  }
+
+  /// Releases the spare capacity of the arrays (for a tree that no longer
+  /// grows).
+  void shrink_to_fit()
+  {
+    nodes_.shrink_to_fit();
+    items_.shrink_to_fit();
+    overflow_.shrink_to_fit();
+    for(Node& n : nodes_) n.entries.shrink_to_fit();
+  }
+
   /// Calls `f(payload)` for every circle with |q - c| < r + inflate (padded).
   template <class Function>
   void query(double qx, double qy, double inflate, Function f) const
