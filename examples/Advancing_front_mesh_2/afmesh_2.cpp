@@ -15,6 +15,7 @@
 
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_quality_histogram.h>
@@ -146,32 +147,22 @@ int run(const Options& opt)
   }
   const double t_read = seconds_since(t_start);
 
-  // The boundary: points, then segments, one by one so that a problem can
-  // be named by its segment.
+  // The boundary, checked on the way (crossings, overlaps, open
+  // boundaries, misplaced hole seeds: one line naming the file and line).
   const auto t_cdt = std::chrono::steady_clock::now();
   CDT cdt;
-  std::vector<typename CDT::Vertex_handle> vh;
-  vh.reserve(in.points.size());
-  for(const auto& p : in.points) vh.push_back(cdt.insert(Point(p[0], p[1])));
-  for(std::size_t i = 0; i < in.segments.size(); ++i) {
-    const auto& s = in.segments[i];
-    if(vh[s[0]] == vh[s[1]]) {
-      std::ostringstream os;
-      os << opt.input << ": segment " << i + 1 << " has zero length (its vertices " << s[0] + 1 << " and "
-         << s[1] + 1 << " coincide)";
-      throw Input_error(os.str());
-    }
-    try {
-      cdt.insert_constraint(vh[s[0]], vh[s[1]]);
-    } catch(const typename CDT::Intersection_of_constraints_exception&) {
-      std::ostringstream os;
-      os << opt.input << ": segment " << i + 1 << " (vertices " << s[0] + 1 << " and " << s[1] + 1
-         << ") crosses another segment";
-      throw Input_error(os.str());
-    }
+  AFM::IO::Poly_insertion<CDT> inserted;
+  try {
+    inserted = AFM::IO::insert_poly(cdt, in);
+  } catch(const AFM::IO::Poly_read_error& e) {
+    throw Input_error(e.what());
   }
-  std::list<Point> seeds;
-  for(const auto& h : in.holes) seeds.push_back(Point(h[0], h[1]));
+  const std::vector<typename CDT::Vertex_handle>& vh = inserted.vertices;
+  const std::list<Point> seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
+  if(inserted.merged_points + inserted.duplicate_segments + inserted.points_on_segments > 0)
+    std::cerr << "afmesh_2: note: " << opt.input << ": " << inserted.merged_points << " duplicate points merged, "
+              << inserted.duplicate_segments << " duplicate segments dropped, " << inserted.points_on_segments
+              << " points inside segments (split there)\n";
   const double t_boundary = seconds_since(t_cdt);
 
   const auto t_field = std::chrono::steady_clock::now();
@@ -304,6 +295,8 @@ int run(const Options& opt)
     }
     json_number(os, "build_time", t_size_field, false);
     os << "}, ";
+    os << "\"input_repairs\": {\"merged_points\": " << inserted.merged_points << ", \"duplicate_segments\": "
+       << inserted.duplicate_segments << ", \"points_on_segments\": " << inserted.points_on_segments << "}, ";
     os << "\"vertices\": " << st.number_of_vertices << ", \"triangles\": " << st.number_of_faces << ", ";
     os << "\"time\": {";
     json_number(os, "read", t_read);

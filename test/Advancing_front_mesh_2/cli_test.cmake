@@ -93,8 +93,53 @@ endif()
 expect_exit(1 ${AFMESH} ${WORK_DIR}/missing.poly --size 0.1 -o ${WORK_DIR}/x.off)
 file(WRITE ${WORK_DIR}/cross.poly "4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 2\n2 3 4\n0\n")
 expect_exit(1 ${AFMESH} ${WORK_DIR}/cross.poly --size 0.1 -o ${WORK_DIR}/x.off)
-if(NOT LAST_ERR MATCHES "^afmesh_2: error: .*cross.poly: segment 2 .*crosses")
+if(NOT LAST_ERR MATCHES "^afmesh_2: error: .*cross.poly:8: segment 2 crosses segment 1 \\(line 7\\)\n$")
   message(FATAL_ERROR "unexpected error line: ${LAST_ERR}")
+endif()
+
+# every kind of bad input: exit 1 and exactly one line, naming the file and
+# (where one applies) the line
+set(SQUARE "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n")
+set(SQUARE_SEGMENTS "1 1 2\n2 2 3\n3 3 4\n4 4 1\n")
+function(expect_input_error name content pattern)
+  file(WRITE ${WORK_DIR}/${name}.poly "${content}")
+  expect_exit(1 ${AFMESH} ${WORK_DIR}/${name}.poly --size 0.1 -o ${WORK_DIR}/x.off)
+  if(NOT LAST_ERR MATCHES "^afmesh_2: error: [^\n]*${name}.poly${pattern}[^\n]*\n$")
+    message(FATAL_ERROR "${name}.poly: unexpected error output: ${LAST_ERR}")
+  endif()
+endfunction()
+expect_input_error(empty "" ": file holds no data")
+expect_input_error(truncated "4 2 0 0\n1 0 0\n2 1 0\n" ":3: expected 4 vertices, file ends after 2")
+expect_input_error(no_segment_header "${SQUARE}" ":5: expected the segment header")
+expect_input_error(nan_coordinate "4 2 0 0\n1 0 0\n2 nan 0\n3 1 1\n4 0 1\n" ":3: .*coordinate")
+expect_input_error(inf_coordinate "4 2 0 0\n1 0 0\n2 1e999 0\n3 1 1\n4 0 1\n" ":3: .*coordinate")
+expect_input_error(bad_count "-4 2 0 0\n" ":1: .*count")
+expect_input_error(bad_index "${SQUARE}4 0\n1 1 2\n2 2 3\n3 3 9\n4 4 1\n0\n" ":9: segment endpoint 9 is out of range")
+expect_input_error(dimension "4 3 0 0\n" ":1: .*dimension")
+expect_input_error(zero_length "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0 0\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 1\n0\n"
+                   ":12: segment 5 has zero length: its end points vertex 5 \\(line 6\\) and vertex 1 \\(line 2\\) are at the same position")
+expect_input_error(overlap "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.2 0\n6 0.8 0\n5 0\n${SQUARE_SEGMENTS}5 5 6\n0\n"
+                   ":13: segment 5 overlaps segment 1 \\(line 9\\)")
+expect_input_error(overlap_shared_end "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.5 0\n5 0\n${SQUARE_SEGMENTS}5 1 5\n0\n"
+                   ":12: segment 5 overlaps segment 1 \\(line 8\\)")
+expect_input_error(hole_on_segment "${SQUARE}4 0\n${SQUARE_SEGMENTS}1\n1 0.5 0\n" ":12: hole 1 lies on segment 1 \\(line 7\\)")
+expect_input_error(hole_on_vertex "${SQUARE}4 0\n${SQUARE_SEGMENTS}1\n1 1 1\n" ":12: hole 1 lies on vertex 3 \\(line 4\\)")
+expect_input_error(hole_outside "${SQUARE}4 0\n${SQUARE_SEGMENTS}1\n1 3 3\n" ":12: hole 1 lies outside every closed boundary")
+expect_input_error(open_boundary "${SQUARE}3 0\n1 1 2\n2 2 3\n3 3 4\n0\n" ":2: the boundary is open at vertex 1: 1 segment ends there \\(segment 1 \\(line 7\\)\\)")
+expect_input_error(dangling_outside "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 2\n6 3 2\n5 0\n${SQUARE_SEGMENTS}5 5 6\n0\n"
+                   ":6: the boundary is open at vertex 5")
+expect_input_error(nothing_left "${SQUARE}4 0\n${SQUARE_SEGMENTS}1\n1 0.5 0.5\n" ": nothing to mesh")
+expect_input_error(no_segments "${SQUARE}0 0\n0\n" ": nothing to mesh")
+
+# input whose meaning is plain is repaired, with a note: a duplicate point
+# (used by a segment), a repeated segment (reversed), a point inside a segment
+file(WRITE ${WORK_DIR}/repaired.poly "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 0\n6 0.5 0\n5 0\n1 1 2\n2 5 3\n3 3 4\n4 4 1\n5 2 1\n0\n")
+expect_exit(0 ${AFMESH} ${WORK_DIR}/repaired.poly --size 0.1 -o ${WORK_DIR}/repaired.off --stats)
+if(NOT LAST_ERR MATCHES "note: .*repaired.poly: 1 duplicate points merged, 1 duplicate segments dropped, 1 points inside segments")
+  message(FATAL_ERROR "no repair note: ${LAST_ERR}")
+endif()
+if(NOT LAST_OUT MATCHES "\"input_repairs\": {\"merged_points\": 1, \"duplicate_segments\": 1, \"points_on_segments\": 1}")
+  message(FATAL_ERROR "--stats lacks the repairs: ${LAST_OUT}")
 endif()
 # a bad sources file: exit 1, file and line named
 file(WRITE ${WORK_DIR}/bad_sources.txt "0.1 0.1 0.01\n0.2 0.2 -1\n")

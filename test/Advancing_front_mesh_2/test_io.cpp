@@ -8,6 +8,7 @@
 
 #include "afm_test_harness.h"
 
+#include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 
@@ -689,3 +690,104 @@ AFM_TEST_CASE(test_io_write_mesh_by_extension)
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------
+// insert_poly(): geometric problems named by file, line and the file's ids
+
+namespace {
+
+struct Expected_problem
+{
+  const char* name;
+  std::string content;
+  std::size_t line;
+  const char* problem; // the start of problem()
+};
+
+} // namespace
+
+AFM_TEST_CASE(test_io_insert_poly_rejects_bad_geometry)
+{
+  const std::string square = "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n";
+  const std::string sides = "1 1 2\n2 2 3\n3 3 4\n4 4 1\n";
+  const std::vector<Expected_problem> cases = {
+    {"zero length", "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0 0\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 1\n0\n", 12,
+     "segment 5 has zero length: its end points vertex 5 (line 6) and vertex 1 (line 2) are at the same position"},
+    {"crossing", square + "2 0\n1 1 3\n2 2 4\n0\n", 8, "segment 2 crosses segment 1 (line 7)"},
+    {"crossing, 0-based", "4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n6 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 0 2\n5 1 3\n0\n", 12,
+     "segment 5 crosses segment 4 (line 11)"},
+    {"overlap", "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.2 0\n6 0.8 0\n5 0\n" + sides + "5 5 6\n0\n", 13,
+     "segment 5 overlaps segment 1 (line 9) along a piece of line"},
+    {"overlap from a shared end", "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.5 0\n5 0\n" + sides + "5 1 5\n0\n", 12,
+     "segment 5 overlaps segment 1 (line 8)"},
+    {"overlap, one inside the other", "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 -1 0\n6 2 0\n5 0\n" + sides +
+     "5 5 6\n0\n", 13, "segment 5 overlaps segment 1 (line 9)"},
+    {"hole on a segment", square + "4 0\n" + sides + "1\n1 0.5 0\n", 12, "hole 1 lies on segment 1 (line 7)"},
+    {"hole on a vertex", square + "4 0\n" + sides + "1\n1 1 1\n", 12, "hole 1 lies on vertex 3 (line 4)"},
+    {"hole outside", square + "4 0\n" + sides + "2\n1 0.5 0.5\n2 3 3\n", 13,
+     "hole 2 lies outside every closed boundary"},
+    {"open boundary", square + "3 0\n1 1 2\n2 2 3\n3 3 4\n0\n", 2,
+     "the boundary is open at vertex 1: 1 segment ends there (segment 1 (line 7))"},
+    {"dangling segment outside", "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 2\n6 3 2\n5 0\n" + sides + "5 5 6\n0\n", 6,
+     "the boundary is open at vertex 5: 1 segment ends there (segment 5 (line 13))"},
+    {"three segments at a vertex outside", "8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 2\n6 3 2\n7 2 3\n8 3 3\n7 0\n" +
+     sides + "5 5 6\n6 5 7\n7 5 8\n0\n", 6, "the boundary is open at vertex 5: 3 segments end there"},
+    {"nothing left", square + "4 0\n" + sides + "1\n1 0.5 0.5\n", 0, "nothing to mesh"},
+    {"no segments", square + "0 0\n0\n", 0, "nothing to mesh"},
+    {"collinear points", "3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n0 0\n0\n", 0, "nothing to mesh"},
+  };
+  for(const Expected_problem& c : cases) {
+    const afm_io::Poly_data data = parse(c.content, "bad.poly");
+    CDT cdt;
+    bool thrown = false;
+    try {
+      afm_io::insert_poly(cdt, data);
+    } catch(const afm_io::Poly_read_error& e) {
+      thrown = true;
+      AFM_CHECK_MSG(e.file() == "bad.poly", c.name << ": " << e.what());
+      AFM_CHECK_MSG(e.line() == c.line, c.name << ": " << e.what());
+      AFM_CHECK_MSG(e.problem().compare(0, std::strlen(c.problem), c.problem) == 0, c.name << ": " << e.what());
+      AFM_CHECK_MSG(std::string(e.what()).find('\n') == std::string::npos, c.name << ": " << e.what());
+    }
+    AFM_CHECK_MSG(thrown, c.name << ": accepted");
+  }
+
+  // data built in code: named by 0-based index, without lines
+  afm_io::Poly_data code;
+  code.points = {{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}};
+  code.segments = {{{0, 2}}, {{1, 3}}};
+  CDT cdt;
+  try {
+    afm_io::insert_poly(cdt, code);
+    AFM_CHECK_MSG(false, "crossing segments built in code were accepted");
+  } catch(const afm_io::Poly_read_error& e) {
+    AFM_CHECK_MSG(std::string(e.what()) == "PSLG: segment 1 crosses segment 0", e.what());
+  }
+}
+
+AFM_TEST_CASE(test_io_insert_poly_repairs)
+{
+  // vertex 5 repeats vertex 2 and is used by a segment, segment 5 repeats
+  // segment 1 reversed, vertex 6 lies inside segment 1, and the dangling
+  // segment 6 inside the square is an interior constraint (legal)
+  const std::string content = "8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 0\n6 0.5 0\n7 0.3 0.3\n8 0.6 0.4\n"
+                              "6 0\n1 1 2\n2 5 3\n3 3 4\n4 4 1\n5 2 1\n6 7 8\n0\n";
+  const afm_io::Poly_data data = parse(content, "repaired.poly");
+  CDT cdt;
+  const auto r = afm_io::insert_poly(cdt, data);
+  AFM_CHECK_MSG(r.merged_points == 1, r.merged_points);
+  AFM_CHECK_MSG(r.duplicate_segments == 1, r.duplicate_segments);
+  AFM_CHECK_MSG(r.points_on_segments == 1, r.points_on_segments);
+  AFM_CHECK(r.vertices.size() == 8 && r.vertices[4] == r.vertices[1]);
+  AFM_CHECK(cdt.number_of_vertices() == 7);
+  // the bottom side is split at vertex 6: two constrained edges
+  std::size_t constrained = 0;
+  for(const auto& e : cdt.constrained_edges()) {
+    (void)e;
+    ++constrained;
+  }
+  AFM_CHECK_MSG(constrained == 6, constrained);
+  std::size_t in_domain = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) in_domain += f->is_in_domain();
+  AFM_CHECK(in_domain == cdt.number_of_faces());
+}

@@ -3,6 +3,7 @@
 #include "afm_test_mesh.h"
 #include "afm_geometries.h"
 
+#include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 
@@ -163,6 +164,32 @@ AFM_TEST_CASE(test_interior_constraint_and_free_point)
   in.points = {{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}, {{0.3, 0.5}}, {{0.6, 0.55}}, {{0.7, 0.2}}};
   in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}, {{4, 5}}};
   mesh_and_check<CDT>(in, uniform<K>(0.05), "interior constraint and free point", 3);
+}
+
+// Input repaired by insert_poly() (duplicate points merged, a repeated
+// segment dropped, segments split at the points inside them, among them a
+// T-junction) meshes into a valid mesh of the segments as split.
+AFM_TEST_CASE(test_repaired_input_meshes)
+{
+  afm_test::Poly_data in;
+  in.points = {{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}, {{1, 0}},     // 4 repeats 1
+               {{0.5, 0}}, {{0.25, 0.5}}, {{0.75, 0.5}}, {{0.5, 0.5}}, // 5 inside a side
+               {{0.5, 0.8}}, {{0.1, 0.9}}};                          // 10: a free point
+  in.segments = {{{0, 1}}, {{4, 2}}, {{2, 3}}, {{3, 0}}, {{1, 0}}, // 4 repeats 0
+                 {{6, 7}},                                         // 8 inside it
+                 {{8, 9}}};                                        // a T-junction
+  CDT cdt;
+  const auto inserted = CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt, in);
+  AFM_CHECK(inserted.merged_points == 1 && inserted.duplicate_segments == 1 && inserted.points_on_segments == 2);
+  CGAL::Advancing_front_mesher_2<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(
+    cdt, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K>(0.05));
+  mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
+  AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
+  AFM_CHECK(cdt.is_valid());
+  const auto report = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
+  AFM_CHECK_MSG(report.ok, report.summary());
+  // the sides are not split (input segments are kept): about 140 triangles
+  AFM_CHECK_MSG(mesher.statistics().number_of_faces > 100, mesher.statistics().number_of_faces);
 }
 
 AFM_TEST_CASE(test_determinism)

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -33,6 +34,21 @@ struct Poly_data
   std::vector<std::array<double, 2> > points;
   std::vector<std::array<std::size_t, 2> > segments;
   std::vector<std::array<double, 2> > holes;
+
+  /*!
+  Where the items were read, so that a problem found after reading (by
+  `insert_poly()`) names the file, line and id as the file gives them.
+  Filled by `read_poly()`; left empty for data built in code, whose
+  problems are then named by 0-based index without a line.
+  */
+  struct Origin
+  {
+    std::string file;        ///< the `.poly` file (segments and holes)
+    std::string point_file;  ///< the file of the points (the `.poly` file, or its `.node` file)
+    std::vector<std::size_t> point_lines, segment_lines, hole_lines; ///< 1-based line of each item
+    long long first_point_id = 0, first_segment_id = 0, first_hole_id = 0; ///< 0 or 1, as in the file
+  };
+  Origin origin;
 };
 
 } // namespace IO

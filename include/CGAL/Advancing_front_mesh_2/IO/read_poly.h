@@ -44,7 +44,10 @@ namespace IO {
 \ingroup PkgAdvancingFrontMesh2IO
 
 Thrown by `read_poly()` for any problem with its input: a file that cannot
-be opened, a missing or truncated section, a malformed or out-of-range value.
+be opened, a missing or truncated section, a malformed or out-of-range value;
+and by `insert_poly()` for a graph that cannot be meshed as it stands
+(crossing or overlapping segments, a zero-length segment, a misplaced hole
+seed, an open boundary, nothing left to mesh).
 
 The position is kept apart from the message so that a caller (an editor
 integration, a test) can point at the offending line without parsing
@@ -456,7 +459,10 @@ inline long long poly_read_vertices(Poly_line_reader& r,
     if(h.markers != 0)
       r.marker(3 + h.attributes);
     data.points.push_back(std::array<double, 2>{{x, y}});
+    data.origin.point_lines.push_back(r.line());
   }
+  data.origin.point_file = r.file();
+  data.origin.first_point_id = base;
   return base;
 }
 
@@ -523,6 +529,7 @@ inline Poly_data read_poly(std::istream& in, const std::string& file_name)
 {
   internal::Poly_line_reader r(in, file_name);
   Poly_data data;
+  data.origin.file = file_name;
 
   const internal::Poly_node_header header = internal::poly_read_node_header(r);
   long long vertex_base = 0;
@@ -588,7 +595,9 @@ inline Poly_data read_poly(std::istream& in, const std::string& file_name)
     if(segment_markers != 0)
       r.marker(3);
     data.segments.push_back(seg);
+    data.origin.segment_lines.push_back(r.line());
   }
+  data.origin.first_segment_id = segment_base;
 
   // Holes.
   if(!r.next())
@@ -606,7 +615,9 @@ inline Poly_data read_poly(std::istream& in, const std::string& file_name)
     const double x = r.real(1, "coordinate");
     const double y = r.real(2, "coordinate");
     data.holes.push_back(std::array<double, 2>{{x, y}});
+    data.origin.hole_lines.push_back(r.line());
   }
+  data.origin.first_hole_id = hole_base;
 
   // Regional attributes and area constraints belong to Triangle's own
   // refinement; they are validated so that a damaged file is still caught,
