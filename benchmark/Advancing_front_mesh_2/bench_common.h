@@ -67,6 +67,7 @@ struct Run
   std::size_t triangles = 0, vertices = 0;
   double seconds = 0;
   std::size_t peak_bytes = 0;     // extra heap during the run
+  int runs = 1;                   // the time is the fastest of this many runs
   Quality quality;
   std::string checker = "not checked";
   double off_target = 0;          // triangles / target - 1

@@ -277,6 +277,11 @@ struct Calibration
 // second run of a large case costs more than the 3% are worth.
 constexpr double expensive_run_seconds = 8;
 
+// Our mesher and Mesh_2 are timed as the fastest of 3 runs up to 1.5M
+// triangles (the larger runs last long enough to vary less, and Mesh_2's
+// 1e7 run alone takes 3 minutes).
+int timing_repeats(double triangles) { return triangles <= 1.5e6 ? 3 : 1; }
+
 template <class Attempt>
 Outcome tune(const std::string& label, double target, double guess, Calibration& cal, Attempt attempt)
 {
@@ -423,6 +428,15 @@ struct Bench
       cr.bulk_peak_bytes = meter.peak_bytes();
       std::cerr << "  bulk Delaunay of " << cr.bulk_points << " points: " << cr.bulk_seconds << " s\n";
     }
+    // the fastest of a few runs, for ours as for Mesh_2: single runs of the
+    // 1M case varied by 20% between benchmark runs
+    const int repeats = timing_repeats(target);
+    for(int r = 1; r < repeats; ++r) {
+      const Outcome again = run_ours(in, sizing);
+      ours.run.seconds = (std::min)(ours.run.seconds, again.run.seconds);
+      ours.meshing_time = (std::min)(ours.meshing_time, again.meshing_time);
+    }
+    ours.run.runs = repeats;
     cr.runs.push_back(ours.run);
     if(phase_timing) {
       Outcome timed = run_ours(in, sizing, &cr.phases);
@@ -434,19 +448,18 @@ struct Bench
 
     // 2. Mesh_2: size bound S on the longest edge (B = 0.125), or the field scaled
     {
-      Outcome m;
-      if(uniform) {
-        m = tune(std::string(mesh2_name) + " S", target, uniform_h / 0.7, cal.mesh2, [&](double S) {
-          return run_mesh2(in, CGAL::Delaunay_mesh_size_criteria_2<CDT>(0.125, S));
-        });
-        m.run.parameter = "B = 0.125, S = " + number_text(m.parameter);
-      } else {
-        m = tune(std::string(mesh2_name) + " field scale", target, 1., cal.mesh2, [&](double s) {
-          return run_mesh2(in, AFM::Sizing_field_mesh_criteria_2<CDT, Scaled_field<Sizing> >(
-                                 Scaled_field<Sizing>{sizing, s}));
-        });
-        m.run.parameter = "B = 0.125, field x " + number_text(m.parameter, 4) + " / 0.7";
-      }
+      auto attempt = [&](double p) {
+        if(uniform) return run_mesh2(in, CGAL::Delaunay_mesh_size_criteria_2<CDT>(0.125, p));
+        return run_mesh2(in, AFM::Sizing_field_mesh_criteria_2<CDT, Scaled_field<Sizing> >(
+                               Scaled_field<Sizing>{sizing, p}));
+      };
+      Outcome m = tune(std::string(mesh2_name) + (uniform ? " S" : " field scale"), target,
+                       uniform ? uniform_h / 0.7 : 1., cal.mesh2, attempt);
+      m.run.parameter = uniform ? "B = 0.125, S = " + number_text(m.parameter)
+                                : "B = 0.125, field x " + number_text(m.parameter, 4) + " / 0.7";
+      for(int r = 1; r < repeats; ++r)
+        m.run.seconds = (std::min)(m.run.seconds, attempt(m.parameter).run.seconds);
+      m.run.runs = repeats;
       m.run.allocations = m.allocations;
       evaluate(m, in);
       cr.runs.push_back(m.run);
@@ -638,7 +651,9 @@ void write_report(const Bench& b, const std::string& heap_check)
         "triangle count is the target, and the size parameter of Mesh_2 and Gmsh (or the scale of the sizing field) "
         "is tuned so that their counts agree with ours (deviation in brackets; tuning runs are not reported). "
         "**Time**: building the constrained Delaunay triangulation (or the Gmsh model) from the PSLG plus "
-        "meshing; sizing fields are built beforehand and shared. **Peak memory**: the heap high-water mark above "
+        "meshing; sizing fields are built beforehand and shared; for ours and Mesh_2 the fastest of 3 runs up "
+        "to 1.5M triangles (single runs of the 1M case varied by 20% between benchmark runs), of 1 run above "
+        "and for Gmsh. **Peak memory**: the heap high-water mark above "
         "the state before the run (interposed malloc, Gmsh included; " + heap_check + "). **Radius ratio** "
         "2r/R, computed by the same code on every mesher's triangle list. **Checker**: the test suite's "
         "independent validity checker (for Mesh_2 against the input segments as split by Mesh_2); Gmsh meshes are "
