@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs, only those missing.
 set -euo pipefail
-packages=(libcgal-dev libboost-dev libboost-program-options-dev libgmp-dev libmpfr-dev libeigen3-dev)
+# Extra packages can be named as arguments (the tests add clang for libFuzzer).
+packages=(libcgal-dev libboost-dev libboost-program-options-dev libgmp-dev libmpfr-dev libeigen3-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing, then builds and runs every
 # test twice: in a Debug build with CGAL's assertions on, and in a Debug
-# build under AddressSanitizer + UndefinedBehaviorSanitizer.
+# build under AddressSanitizer + UndefinedBehaviorSanitizer; then builds the
+# libFuzzer targets with clang and runs each for AFM_FUZZ_SECONDS (default
+# 60) from its corpus.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh clang libclang-rt-14-dev
 jobs=${AFM_JOBS:-2}
 for variant in debug asan; do
   sanitize=OFF
@@ -15,4 +17,20 @@ for variant in debug asan; do
   echo "=== $variant tests ==="
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir "build/$variant" --output-on-failure -j"$jobs" --timeout 1500
+done
+
+fuzz_seconds=${AFM_FUZZ_SECONDS:-60}
+echo "=== fuzz build (clang, libFuzzer + ASan + UBSan) ==="
+cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DAFM_BUILD_FUZZERS=ON -DAFM_BUILD_TESTS=OFF -DAFM_BUILD_EXAMPLES=OFF > /dev/null
+cmake --build build/fuzz -j"$jobs"
+for target in read_poly mesh; do
+  echo "=== fuzz_$target: $fuzz_seconds s ==="
+  # a scratch copy of the corpus: what the fuzzer adds stays out of the repository
+  corpus="build/fuzz/corpus_$target"
+  rm -rf "$corpus"
+  mkdir -p "$corpus"
+  cp test/Advancing_front_mesh_2/fuzz/corpus/$target/* "$corpus"/
+  build/fuzz/test/Advancing_front_mesh_2/fuzz/fuzz_$target -max_total_time="$fuzz_seconds" -timeout=30 \
+    -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix=build/fuzz/ "$corpus"
 done

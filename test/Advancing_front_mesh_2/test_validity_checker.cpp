@@ -91,6 +91,24 @@ AFM_TEST_CASE(test_checker_unit_square_accepted)
   AFM_CHECK(r.summary().rfind("ok", 0) == 0);
 }
 
+// Coordinates near 1e+300 and 1e-300 are checked scaled by a power of two:
+// the verdicts stay, the areas come back in the input's units.
+AFM_TEST_CASE(test_checker_extreme_magnitudes)
+{
+  for(int e : {996, -996}) {
+    Pslg in = unit_square();
+    Mesh m = unit_square_mesh();
+    for(auto& p : in.points) p = {{std::ldexp(p[0], e), std::ldexp(p[1], e)}};
+    for(auto& p : m.vertices) p = {{std::ldexp(p[0], e), std::ldexp(p[1], e)}};
+    const Report r = afm_check::check_mesh(in, m);
+    AFM_CHECK_MSG(r.ok, "2^" << e << ": " << explain(r));
+    AFM_CHECK_MSG(r.domain_area == std::ldexp(1.0, 2 * e), r.domain_area);
+    m.triangles.pop_back(); // half the square uncovered
+    const Report bad = afm_check::check_mesh(in, m);
+    AFM_CHECK_MSG(!bad.ok, "2^" << e << ": a half-covered square was accepted");
+  }
+}
+
 AFM_TEST_CASE(test_checker_equilateral_quality)
 {
   Pslg in;

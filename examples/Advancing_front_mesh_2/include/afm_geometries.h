@@ -971,6 +971,113 @@ inline Poly_data nearly_collinear_boundary(double eps = 1e-9)
   return polygon_with_holes({l});
 }
 
+// ---------------------------------------------------------------------------
+// Adversarial geometries (robustness tests)
+// ---------------------------------------------------------------------------
+
+/// Unit square (spacing h) with a straight slit cut into it from the middle
+/// of its left side to its centre: a slot of width `width` (1e-7 by
+/// default, under 1e-6 of the domain), whose two long sides, spacing h,
+/// face each other across the slot; the domain wraps around its tip.
+inline Poly_data square_with_slit(double width = 1e-7, double h = 0.05)
+{
+  if(!(width > 0) || !(width < 0.1) || !(h > 0))
+    throw std::invalid_argument("square_with_slit: need 0 < width < 0.1 and h > 0");
+  const double y0 = 0.5 - 0.5 * width, y1 = 0.5 + 0.5 * width;
+  Loop l;
+  const std::size_t k = std::max<std::size_t>(1, std::size_t(std::llround(0.5 / h)));
+  for(std::size_t j = 0; j < k; ++j) l.push_back({0.5 * double(j) / double(k), y1});              // slot top, inwards
+  l.push_back({0.5, y1});                                                                        // the tip
+  l.push_back({0.5, y0});
+  for(std::size_t j = k; j-- > 1;) l.push_back({0.5 * double(j) / double(k), y0});                 // slot bottom, outwards
+  const Loop lower = subdivided_polygon({{0, y0}, {0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, y1}}, h);
+  // lower starts at (0, y0) and ends on the left side just below (0, y1)
+  for(const Point& p : lower) l.push_back(p);
+  // drop points of the subdivided left side inside the slot's mouth
+  Loop out;
+  for(const Point& p : l)
+    if(!(p[0] == 0 && p[1] > y0 && p[1] < y1)) out.push_back(p);
+  return polygon_with_holes({out});
+}
+
+/// A disk of radius 1 whose boundary spacing grows geometrically by
+/// `growth` per point from h_min at angle 0 to h_min * ratio and back: the
+/// spacing varies by `ratio` (1e4 by default) along one loop.
+inline Poly_data graded_circle(double ratio = 1e4, double h_max = 0.4, double growth = 1.25)
+{
+  if(!(ratio >= 1) || !(h_max > 0) || !(growth > 1))
+    throw std::invalid_argument("graded_circle: need ratio >= 1, h_max > 0, growth > 1");
+  const double h_min = h_max / ratio;
+  // spacing as a function of the arc length from angle 0, symmetric about pi
+  std::vector<double> half{0.0};
+  double h = h_min, s = 0;
+  while(s + h < pi) {
+    s += h;
+    half.push_back(s);
+    h = (std::min)(h * growth, h_max);
+  }
+  // close the half loop at pi with the last gap shared, then mirror it
+  Loop l;
+  for(double a : half) l.push_back({std::cos(a), std::sin(a)});
+  l.push_back({-1.0, 0.0});
+  for(std::size_t i = half.size(); i-- > 1;) l.push_back({std::cos(half[i]), -std::sin(half[i])});
+  return polygon_with_holes({l});
+}
+
+/// Square [-8,8]^2 (spacing 1) holding free points that are exactly
+/// cocircular in double precision (the twelve integer points of the circle
+/// x^2 + y^2 = 25, and of the circles about (1, 1) and (-2, 1) scaled by
+/// 1/4), plus points one unit in the last place off such circles.
+inline Poly_data cocircular_points()
+{
+  Poly_data pd = polygon_with_holes({subdivided_polygon({{-8, -8}, {8, -8}, {8, 8}, {-8, 8}}, 1.0)});
+  const int pyth[12][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  for(const auto& q : pyth) pd.points.push_back({double(q[0]), double(q[1])});
+  for(const auto& q : pyth) pd.points.push_back({1.0 + 0.25 * q[0], 1.0 + 0.25 * q[1]});
+  for(const auto& q : pyth)
+    pd.points.push_back({std::nextafter(-2.0 + 0.25 * q[0], 10.0), 1.0 + 0.25 * q[1]}); // one ulp off
+  return pd;
+}
+
+/// A square [0,10]^2 (spacing 0.25) with one huge centred circular hole
+/// (radius 3.5, 200 points) and `n` tiny holes (radius 0.01 .. 0.05, 6 to
+/// 12 points) scattered around it, placed deterministically.
+inline Poly_data huge_and_tiny_holes(std::size_t n = 60, unsigned seed = 7)
+{
+  std::mt19937 rng(seed);
+  auto uniform = [&rng]() { return (double(rng()) + 0.5) / 4294967296.0; };
+  std::vector<Loop> loops{subdivided_polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0.25),
+                          circle({5, 5}, 3.5, 200, false)};
+  std::vector<std::pair<Point, double> > placed{{{5, 5}, 3.5}};
+  while(placed.size() < n + 1) {
+    const double r = 0.01 + 0.04 * uniform();
+    const Point c{0.2 + 9.6 * uniform(), 0.2 + 9.6 * uniform()};
+    bool ok = true;
+    for(const auto& pc : placed)
+      if(std::hypot(c[0] - pc.first[0], c[1] - pc.first[1]) < r + pc.second + 0.05) ok = false;
+    if(!ok) continue;
+    placed.push_back({c, r});
+    loops.push_back(circle(c, r, 6 + std::size_t(6 * uniform()), false));
+  }
+  return polygon_with_holes(loops);
+}
+
+/// `pd` scaled by `factor` about the origin (points and hole seeds): with a
+/// power of two the coordinates are scaled exactly.
+inline Poly_data scaled(const Poly_data& pd, double factor)
+{
+  Poly_data out(pd);
+  for(auto& p : out.points) {
+    p[0] *= factor;
+    p[1] *= factor;
+  }
+  for(auto& p : out.holes) {
+    p[0] *= factor;
+    p[1] *= factor;
+  }
+  return out;
+}
+
 /// `pd` translated by (dx, dy) (points and hole seeds).
 inline Poly_data offset(const Poly_data& pd, double dx, double dy)
 {

@@ -990,8 +990,37 @@ private:
 
 inline Report check_mesh(const Pslg& input, const Mesh& mesh)
 {
+  // Coordinates of extreme magnitude (near 1e+300 or 1e-300) make the
+  // arrangement's constructions overflow or underflow in CGAL's filtered
+  // kernel (an assertion in Arr_segment_traits_2 fires at 1e+300). Every
+  // test here is invariant under a uniform scaling, and scaling by a power
+  // of two is exact, so such input is checked scaled to magnitudes near 1;
+  // only the reported areas are scaled back.
+  double largest = 0;
+  auto see = [&largest](const std::array<double, 2>& p) {
+    largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1])});
+  };
+  for(const auto& p : input.points) see(p);
+  for(const auto& p : input.holes) see(p);
+  for(const auto& p : mesh.vertices) see(p);
+  int exponent = 0;
+  if(largest > 0 && std::isfinite(largest)) std::frexp(largest, &exponent);
   Report report;
-  detail::Checker(input, mesh, report).run();
+  if(exponent > -200 && exponent < 200) {
+    detail::Checker(input, mesh, report).run();
+    return report;
+  }
+  auto scale = [exponent](std::array<double, 2> p) {
+    return std::array<double, 2>{{std::ldexp(p[0], -exponent), std::ldexp(p[1], -exponent)}};
+  };
+  Pslg scaled_input = input;
+  Mesh scaled_mesh = mesh;
+  for(auto& p : scaled_input.points) p = scale(p);
+  for(auto& p : scaled_input.holes) p = scale(p);
+  for(auto& p : scaled_mesh.vertices) p = scale(p);
+  detail::Checker(scaled_input, scaled_mesh, report).run();
+  report.mesh_area = std::ldexp(report.mesh_area, 2 * exponent);
+  report.domain_area = std::ldexp(report.domain_area, 2 * exponent);
   return report;
 }
 
