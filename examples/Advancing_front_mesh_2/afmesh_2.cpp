@@ -70,6 +70,8 @@ struct Options
   bool stats = false;
   bool report = false;
   bool no_pocket_priority = false;
+  double time_limit = 0;     // seconds of meshing, 0: none
+  std::size_t max_steps = 0; // front edges processed, 0: none
   std::size_t smooth = 0;
   std::string svg_color = "plain";
   std::string histogram;
@@ -195,8 +197,14 @@ int run(const Options& opt)
   CGAL::Advancing_front_mesher_2<CDT, Cli_sizing_field<K>, Progress_visitor> mesher(cdt, sizing, progress);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_pocket_priority(!opt.no_pocket_priority);
+  mesher.set_time_limit(opt.time_limit);
+  mesher.set_iteration_limit(opt.max_steps);
   const auto t_mesh = std::chrono::steady_clock::now();
-  mesher.refine_mesh();
+  const AFM::Mesh_return_code rc = mesher.refine_mesh();
+  if(rc != AFM::MESH_COMPLETE)
+    std::cerr << "afmesh_2: note: " << opt.input << ": "
+              << (rc == AFM::TIME_LIMIT_REACHED ? "--time-limit" : "--max-steps")
+              << " reached: the rest of the front was closed on existing points (valid, coarser there)\n";
   mesher.visitor().done();
   const double t_meshing = seconds_since(t_mesh);
   const AFM::Statistics& st = mesher.statistics();
@@ -295,6 +303,10 @@ int run(const Options& opt)
     }
     json_number(os, "build_time", t_size_field, false);
     os << "}, ";
+    os << "\"mesh_return_code\": \""
+       << (rc == AFM::MESH_COMPLETE ? "MESH_COMPLETE"
+                                    : rc == AFM::TIME_LIMIT_REACHED ? "TIME_LIMIT_REACHED" : "ITERATION_LIMIT_REACHED")
+       << "\", ";
     os << "\"input_repairs\": {\"merged_points\": " << inserted.merged_points << ", \"duplicate_segments\": "
        << inserted.duplicate_segments << ", \"points_on_segments\": " << inserted.points_on_segments << "}, ";
     os << "\"vertices\": " << st.number_of_vertices << ", \"triangles\": " << st.number_of_faces << ", ";
@@ -355,7 +367,7 @@ int run(const Options& opt)
 Options parse(int argc, char* argv[])
 {
   Options opt;
-  long long smooth = 0;
+  long long smooth = 0, max_steps = 0;
   po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
                                   "Meshes the domain of a Triangle .poly file with the advancing-front\n"
                                   "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
@@ -382,6 +394,11 @@ Options parse(int argc, char* argv[])
     ("no-pocket-priority", po::bool_switch(&opt.no_pocket_priority),
      "mesh the front's pockets in shortest-first order too: a little better quality "
      "where patches meet, a front up to 4 times larger")
+    ("time-limit", po::value<double>(&opt.time_limit),
+     "stop meshing after this many seconds: the rest of the front is closed on existing points, the "
+     "mesh is valid but coarser there, and a note says so (the run ends without it too)")
+    ("max-steps", po::value<long long>(&max_steps),
+     "stop meshing after this many front edges, as --time-limit does")
     ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout")
     ("report", po::bool_switch(&opt.report),
      "print a readable quality summary (on stdout; on stderr with --stats)");
@@ -409,6 +426,10 @@ Options parse(int argc, char* argv[])
   // read as a signed number: Boost reads "-1" into an unsigned as its largest value
   if(smooth < 0 || smooth > 1000) throw Usage_error("--smooth must be a number of passes from 0 to 1000");
   opt.smooth = std::size_t(smooth);
+  if(vm.count("time-limit") && (!(opt.time_limit > 0) || !std::isfinite(opt.time_limit)))
+    throw Usage_error("--time-limit must be a positive number of seconds");
+  if(vm.count("max-steps") && max_steps < 1) throw Usage_error("--max-steps must be a positive count");
+  opt.max_steps = std::size_t(max_steps);
   if(opt.svg_color != "plain" && opt.svg_color != "quality")
     throw Usage_error("--svg-color must be plain or quality, not '" + opt.svg_color + "'");
   if(opt.grading == "off") {

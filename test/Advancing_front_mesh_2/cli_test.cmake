@@ -129,6 +129,8 @@ expect_input_error(open_boundary "${SQUARE}3 0\n1 1 2\n2 2 3\n3 3 4\n0\n" ":2: t
 expect_input_error(dangling_outside "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 2\n6 3 2\n5 0\n${SQUARE_SEGMENTS}5 5 6\n0\n"
                    ":6: the boundary is open at vertex 5")
 expect_input_error(nothing_left "${SQUARE}4 0\n${SQUARE_SEGMENTS}1\n1 0.5 0.5\n" ": nothing to mesh")
+expect_input_error(leaking_polyline "8 2 0 0\n1 0 0\n2 -1 0\n3 -1 0.3\n4 0 1\n5 -1 1\n6 -1 0.7\n7 1 0\n8 1 1\n9 0\n1 1 2\n2 2 3\n3 3 1\n4 4 5\n5 5 6\n6 6 4\n7 1 7\n8 7 8\n9 8 4\n0\n"
+                   ":17: segment 7 borders no region to mesh")
 expect_input_error(no_segments "${SQUARE}0 0\n0\n" ": nothing to mesh")
 
 # input whose meaning is plain is repaired, with a note: a duplicate point
@@ -148,4 +150,20 @@ if(NOT LAST_ERR MATCHES "^afmesh_2: error: .*bad_sources.txt:2: size '-1' is not
   message(FATAL_ERROR "unexpected error line: ${LAST_ERR}")
 endif()
 expect_exit(1 ${AFMESH} ${WORK_DIR}/sq.poly --sources ${WORK_DIR}/no_such_sources.txt -o ${WORK_DIR}/x.off)
+# the limits: a valid, coarser mesh and a note; bad values are bad usage
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --max-steps 50 -o ${WORK_DIR}/sq_limited.off --stats)
+if(NOT LAST_ERR MATCHES "note: .*--max-steps reached")
+  message(FATAL_ERROR "no note for --max-steps: ${LAST_ERR}")
+endif()
+if(NOT LAST_OUT MATCHES "\"mesh_return_code\": \"ITERATION_LIMIT_REACHED\"")
+  message(FATAL_ERROR "--stats lacks the return code: ${LAST_OUT}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_limited.off)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --time-limit 1e-9 -o ${WORK_DIR}/sq_timed.off)
+if(NOT LAST_ERR MATCHES "note: .*--time-limit reached")
+  message(FATAL_ERROR "no note for --time-limit: ${LAST_ERR}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_timed.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --time-limit 0 -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --max-steps -3 -o ${WORK_DIR}/x.off)
 message(STATUS "afmesh_2 command-line interface: all checks passed")

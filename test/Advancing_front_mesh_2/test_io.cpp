@@ -733,6 +733,13 @@ AFM_TEST_CASE(test_io_insert_poly_rejects_bad_geometry)
     {"three segments at a vertex outside", "8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 2\n6 3 2\n7 2 3\n8 3 3\n7 0\n" +
      sides + "5 5 6\n6 5 7\n7 5 8\n0\n", 6, "the boundary is open at vertex 5: 3 segments end there"},
     {"nothing left", square + "4 0\n" + sides + "1\n1 0.5 0.5\n", 0, "nothing to mesh"},
+    // an open polyline whose ends touch two closed triangles (its end points
+    // have 3 segments, beside a region): the square it was meant to close
+    // leaks away
+    {"open polyline between two regions",
+     "8 2 0 0\n1 0 0\n2 -1 0\n3 -1 0.3\n4 0 1\n5 -1 1\n6 -1 0.7\n7 1 0\n8 1 1\n9 0\n1 1 2\n2 2 3\n3 3 1\n"
+     "4 4 5\n5 5 6\n6 6 4\n7 1 7\n8 7 8\n9 8 4\n0\n",
+     17, "segment 7 borders no region to mesh"},
     {"no segments", square + "0 0\n0\n", 0, "nothing to mesh"},
     {"collinear points", "3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n0 0\n0\n", 0, "nothing to mesh"},
   };
@@ -750,6 +757,30 @@ AFM_TEST_CASE(test_io_insert_poly_rejects_bad_geometry)
       AFM_CHECK_MSG(std::string(e.what()).find('\n') == std::string::npos, c.name << ": " << e.what());
     }
     AFM_CHECK_MSG(thrown, c.name << ": accepted");
+  }
+
+  // segments crossing exactly at an input point: split there, accepted
+  {
+    const afm_io::Poly_data x = parse("9 2 0 0\n1 -1 -1\n2 3 -1\n3 3 3\n4 -1 3\n5 0 0\n6 2 2\n7 0 2\n8 2 0\n9 1 1\n"
+                                      "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 7 8\n0\n", "x.poly");
+    CDT cdt;
+    const auto r = afm_io::insert_poly(cdt, x);
+    AFM_CHECK_MSG(r.points_on_segments == 1, r.points_on_segments);
+  }
+
+  // data built in code: out-of-range indices are an error, not undefined
+  {
+    afm_io::Poly_data bad;
+    bad.points = {{{0, 0}}, {{1, 0}}, {{1, 1}}};
+    bad.segments = {{{0, 1}}, {{1, 5}}};
+    CDT cdt;
+    try {
+      afm_io::insert_poly(cdt, bad);
+      AFM_CHECK_MSG(false, "an out-of-range index was accepted");
+    } catch(const afm_io::Poly_read_error& e) {
+      AFM_CHECK_MSG(std::string(e.what()) == "PSLG: segment 1 refers to point index 5, out of range (there are 3 points)",
+                    e.what());
+    }
   }
 
   // data built in code: named by 0-based index, without lines

@@ -269,6 +269,17 @@ AFM_TEST_CASE(test_limits_return_codes_and_valid_mesh)
   AFM_CHECK(cdt.is_valid());
   const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
   AFM_CHECK_MSG(rep.ok, rep.summary());
+
+  // the time limit (checked every 64 steps, the first time before the first
+  // step): a limit already passed stops the run at once, with a valid mesh
+  CDT timed;
+  afm_test::build_cdt(timed, in);
+  const auto rc_time = CGAL::advancing_front_mesh_2(timed, seeds.begin(), seeds.end(), 0.02, false,
+                                                    CGAL::parameters::maximum_running_time(1e-12));
+  AFM_CHECK_MSG(rc_time == CGAL::Advancing_front_mesh_2::TIME_LIMIT_REACHED, int(rc_time));
+  AFM_CHECK(timed.is_valid());
+  const auto rep_time = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(timed));
+  AFM_CHECK_MSG(rep_time.ok, rep_time.summary());
 }
 
 // Found in review: a candidate nearly in line with the edge (left of it by

@@ -52,7 +52,8 @@ struct Poly_insertion
   /// segments joining the same two points as an earlier segment, dropped
   std::size_t duplicate_segments = 0;
   /// points lying inside a segment (between its end points), where the
-  /// triangulation splits the segment
+  /// triangulation splits the segment (also where two segments cross
+  /// exactly at an input point)
   std::size_t points_on_segments = 0;
 };
 
@@ -79,10 +80,11 @@ public:
     return "vertex " + std::to_string(d_.origin.first_point_id + static_cast<long long>(i)) +
            where(point_line(i), point_file() != file() ? point_file() : std::string());
   }
-  std::string segment(std::size_t i) const
+  // in a message about `message_file`, the line names its file if it is another
+  std::string segment(std::size_t i, const std::string& message_file = std::string()) const
   {
     return "segment " + std::to_string(d_.origin.first_segment_id + static_cast<long long>(i)) +
-           where(segment_line(i), std::string());
+           where(segment_line(i), message_file.empty() || message_file == file() ? std::string() : file());
   }
   std::string hole(std::size_t i) const
   {
@@ -146,7 +148,7 @@ Repaired, because their meaning is plain (and counted in the result):
 - points at exactly the same position as an earlier point are merged into it;
 - a segment joining the same two points as an earlier one is dropped;
 - a point lying inside a segment splits it there (the triangulation does
-  this).
+  this), also where two segments cross exactly at an input point.
 
 Rejected, with a `Poly_read_error` naming the file, line and items of the
 first problem in file order:
@@ -156,7 +158,10 @@ first problem in file order:
 - a hole seed outside every closed boundary (it would remove nothing);
 - a boundary left open: a point at which an odd number of segments end, none
   of which has a region to mesh beside it;
-- nothing to mesh: no bounded region is left once the holes are removed.
+- nothing to mesh: no bounded region is left once the holes are removed;
+- a segment with no region to mesh on either side (in a hole or outside):
+  the trace of a boundary left open elsewhere, e.g. an open polyline whose
+  ends touch two other regions.
 
 Data read by `read_poly()` carries its file name and lines
 (`Poly_data::Origin`); for data built in code the file is called `PSLG` and
@@ -223,7 +228,10 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
     std::vector<std::pair<std::array<std::size_t, 2>, std::size_t> > by_ends;
     for(std::size_t i = 0; i < data.segments.size(); ++i) {
       const std::size_t a = data.segments[i][0], b = data.segments[i][1];
-      CGAL_precondition(a < n && b < n);
+      if(a >= n || b >= n)
+        fail(name.file(), name.segment_line(i),
+             name.segment_id(i) + " refers to point index " + std::to_string((std::max)(a, b)) +
+               ", out of range (there are " + std::to_string(n) + " points)");
       if(rep[a] == rep[b])
         fail(name.file(), name.segment_line(i),
              name.segment_id(i) + " has zero length: its end points " + name.point(a) + " and " +
@@ -242,6 +250,34 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
   auto box_of_segment = [&](std::size_t i) {
     return Box(ep(seg_a(i)).bbox() + ep(seg_b(i)).bbox(), i);
   };
+
+  // Points inside segments: the triangulation splits the segments there.
+  // inside[k]: the points strictly inside kept segment k, in order along it.
+  std::vector<Box> segment_boxes, point_boxes;
+  for(std::size_t i : kept) segment_boxes.push_back(box_of_segment(i));
+  for(std::size_t i = 0; i < n; ++i)
+    if(rep[i] == i) point_boxes.push_back(Box(ep(i).bbox(), i));
+  std::vector<std::size_t> kept_index(data.segments.size(), 0);
+  for(std::size_t k = 0; k < kept.size(); ++k) kept_index[kept[k]] = k;
+  std::vector<std::vector<std::size_t> > inside(kept.size());
+  CGAL::box_intersection_d(point_boxes.begin(), point_boxes.end(), segment_boxes.begin(), segment_boxes.end(),
+                           [&](const Box& p, const Box& s) {
+    const std::size_t i = p.info(), j = s.info();
+    const Ep pp = ep(i), pa = ep(seg_a(j)), pb = ep(seg_b(j));
+    if(orientation(pa, pb, pp) == CGAL::COLLINEAR && strictly_between(pa, pp, pb))
+      inside[kept_index[j]].push_back(i);
+  });
+  {
+    std::vector<char> on_segment(n, 0);
+    for(std::size_t k = 0; k < kept.size(); ++k) {
+      const Ep pa = ep(seg_a(kept[k]));
+      std::sort(inside[k].begin(), inside[k].end(), [&](std::size_t u, std::size_t v) {
+        return CGAL::compare_distance_to_point(pa, ep(u), ep(v)) == CGAL::SMALLER;
+      });
+      for(std::size_t i : inside[k]) on_segment[i] = 1;
+    }
+    result.points_on_segments = std::size_t(std::count(on_segment.begin(), on_segment.end(), 1));
+  }
 
   // Segment pairs: crossings and overlaps.
   enum { CROSSING = 1, OVERLAP = 2 };
@@ -274,8 +310,14 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
         return;
       }
       if(o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR &&
-         o4 != CGAL::COLLINEAR && o3 != o4)
+         o4 != CGAL::COLLINEAR && o3 != o4) {
+        // a proper crossing, unless an input point sits exactly at it: then
+        // both segments are split there and share that vertex
+        const auto& in_i = inside[kept_index[i]];
+        for(std::size_t p : inside[kept_index[j]])
+          if(std::find(in_i.begin(), in_i.end(), p) != in_i.end()) return;
         pair_problem.offer(i, j, CROSSING);
+      }
       // an end point inside the other segment is a point on a segment (below)
     });
   }
@@ -286,22 +328,8 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
            (pair_problem.kind == CROSSING ? "" : " along a piece of line"));
   }
 
-  // Points inside segments (split there) and hole seeds on segments or
-  // points (rejected).
+  // Hole seeds on segments or points (rejected).
   {
-    std::vector<Box> segment_boxes, point_boxes;
-    for(std::size_t i : kept) segment_boxes.push_back(box_of_segment(i));
-    for(std::size_t i = 0; i < n; ++i)
-      if(rep[i] == i) point_boxes.push_back(Box(ep(i).bbox(), i));
-    std::vector<char> on_segment(n, 0);
-    CGAL::box_intersection_d(point_boxes.begin(), point_boxes.end(), segment_boxes.begin(), segment_boxes.end(),
-                             [&](const Box& p, const Box& s) {
-      const std::size_t i = p.info(), j = s.info();
-      const Ep pp = ep(i), pa = ep(seg_a(j)), pb = ep(seg_b(j));
-      if(orientation(pa, pb, pp) == CGAL::COLLINEAR && strictly_between(pa, pp, pb)) on_segment[i] = 1;
-    });
-    result.points_on_segments = std::size_t(std::count(on_segment.begin(), on_segment.end(), 1));
-
     // per hole: what it lies on (1: a segment, 2: a point), the first by index
     std::vector<std::pair<int, std::size_t> > hole_on(data.holes.size(), {0, 0});
     auto note = [&hole_on](std::size_t h, int kind, std::size_t item) {
@@ -388,7 +416,8 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
           }
         fail(name.point_file(), name.point_line(i),
              "the boundary is open at " + name.point_id(i) + ": " + std::to_string(degree[i]) +
-               (degree[i] == 1 ? " segment ends" : " segments end") + " there (" + name.segment(first_segment) +
+               (degree[i] == 1 ? " segment ends" : " segments end") + " there (" +
+               name.segment(first_segment, name.point_file()) +
                ") and no region to mesh lies beside " + (degree[i] == 1 ? "it" : "them"));
       }
     }
@@ -397,6 +426,29 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
   bool any = false;
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && !any; ++f) any = f->is_in_domain();
   if(!any) no_region();
+
+  // Every segment borders the region to mesh on at least one side: one that
+  // does not lies in a hole or outside, which is how an open boundary shows
+  // when its ends are not free (an open polyline from one region to
+  // another lets the region it was meant to close leak away).
+  for(std::size_t k = 0; k < kept.size(); ++k) {
+    const std::size_t i = kept[k];
+    std::vector<std::size_t> chain(1, seg_a(i));
+    chain.insert(chain.end(), inside[k].begin(), inside[k].end());
+    chain.push_back(seg_b(i));
+    bool beside_domain = false;
+    for(std::size_t t = 0; t + 1 < chain.size() && !beside_domain; ++t) {
+      typename CDT::Face_handle f;
+      int e = 0;
+      if(!cdt.is_edge(result.vertices[chain[t]], result.vertices[chain[t + 1]], f, e)) continue;
+      const typename CDT::Face_handle g = f->neighbor(e);
+      beside_domain = (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain());
+    }
+    if(!beside_domain)
+      fail(name.file(), name.segment_line(i),
+           name.segment_id(i) + " borders no region to mesh: both of its sides are in holes or outside the "
+                                "domain (is a boundary meant to enclose a region open?)");
+  }
   return result;
 }
 

@@ -107,8 +107,8 @@ public:
     if(capacity != slots_.size()) rehash(capacity);
   }
 
-  /// Halves the table until it is at least a quarter full, once it is less
-  /// than an eighth full: the table follows the front as it shrinks instead
+  /// Halves the table until it is between an eighth and a quarter full,
+  /// once it is less than an eighth full: the table follows the front as it shrinks instead
   /// of keeping the size of the largest front. Returns whether it shrank.
   bool shrink_if_sparse()
   {
