@@ -192,6 +192,49 @@ AFM_TEST_CASE(test_repaired_input_meshes)
   AFM_CHECK_MSG(mesher.statistics().number_of_faces > 100, mesher.statistics().number_of_faces);
 }
 
+// A segment that separates two holes (CGAL's fish-and-rectangle.poly has
+// such segments) is accepted and left inside the holes; the region around
+// them is meshed.
+AFM_TEST_CASE(test_segment_between_two_holes)
+{
+  afm_test::Poly_data in;
+  in.points = {{{0, 0}}, {{3, 0}}, {{3, 1}}, {{0, 1}},                 // outer
+               {{1, 0.25}}, {{2, 0.25}}, {{2, 0.75}}, {{1, 0.75}},     // inner rectangle
+               {{1.5, 0.25}}, {{1.5, 0.75}}};                         // splits it
+  in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}, {{4, 8}}, {{8, 5}}, {{5, 6}},
+                 {{6, 9}}, {{9, 7}}, {{7, 4}}, {{8, 9}}};
+  in.holes = {{{1.25, 0.5}}, {{1.75, 0.5}}};
+  CDT cdt;
+  const auto inserted = CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt, in);
+  CGAL::Advancing_front_mesher_2<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(
+    cdt, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K>(0.1));
+  mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
+  AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
+  AFM_CHECK(cdt.is_valid());
+  const auto report = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
+  AFM_CHECK_MSG(report.ok, report.summary());
+  double area = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain()) area += CGAL::to_double(cdt.triangle(f).area());
+  AFM_CHECK_MSG(std::abs(area - 2.5) < 1e-12, area);
+
+  // a segment inside one hole, between two islands in it: the hole is on
+  // both of its sides, which reads as a boundary left open by mistake
+  in.points = {{{0, 0}}, {{3, 0}}, {{3, 1}}, {{0, 1}}, {{1, 0.25}}, {{2, 0.25}}, {{2, 0.75}}, {{1, 0.75}},
+               {{1.2, 0.4}}, {{1.3, 0.4}}, {{1.25, 0.5}}, {{1.7, 0.4}}, {{1.8, 0.4}}, {{1.75, 0.5}}};
+  in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}, {{4, 5}}, {{5, 6}}, {{6, 7}}, {{7, 4}},
+                 {{8, 9}}, {{9, 10}}, {{10, 8}}, {{11, 12}}, {{12, 13}}, {{13, 11}}, {{9, 11}}};
+  in.holes = {{{1.5, 0.7}}};
+  CDT cdt2;
+  std::string error;
+  try {
+    CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt2, in);
+  } catch(const CGAL::Advancing_front_mesh_2::IO::Poly_read_error& e) {
+    error = e.what();
+  }
+  AFM_CHECK_MSG(error.find("segment 14 borders no region to mesh") != std::string::npos, error);
+}
+
 AFM_TEST_CASE(test_determinism)
 {
   const auto in = afm_geometry::many_holes(15, 3);

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -427,27 +428,49 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && !any; ++f) any = f->is_in_domain();
   if(!any) no_region();
 
-  // Every segment borders the region to mesh on at least one side: one that
-  // does not lies in a hole or outside, which is how an open boundary shows
-  // when its ends are not free (an open polyline from one region to
-  // another lets the region it was meant to close leak away).
+  // Every segment borders the region to mesh on at least one side, or
+  // separates two regions that are not meshed (two holes, or a hole and the
+  // outside: harmless, it is left in place). A segment with the same
+  // unmeshed region on both sides is the trace of an open boundary whose
+  // ends are not free: an open polyline from one region to another lets the
+  // region it was meant to close leak away into the outside or a hole.
+  std::map<typename CDT::Face_handle, std::size_t> region_of;
+  {
+    std::size_t next_region = 0;
+    std::vector<typename CDT::Face_handle> stack;
+    for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
+      // (the infinite faces join through the infinite vertex's edges, which
+      // are never constrained, so the outside is one region)
+      if(!region_of.emplace(f, next_region).second) continue;
+      const std::size_t r = next_region++;
+      stack.push_back(f);
+      while(!stack.empty()) {
+        const typename CDT::Face_handle g = stack.back();
+        stack.pop_back();
+        for(int e = 0; e < 3; ++e)
+          if(!cdt.is_constrained(std::make_pair(g, e)) && region_of.emplace(g->neighbor(e), r).second)
+            stack.push_back(g->neighbor(e));
+      }
+    }
+  }
   for(std::size_t k = 0; k < kept.size(); ++k) {
     const std::size_t i = kept[k];
     std::vector<std::size_t> chain(1, seg_a(i));
     chain.insert(chain.end(), inside[k].begin(), inside[k].end());
     chain.push_back(seg_b(i));
-    bool beside_domain = false;
-    for(std::size_t t = 0; t + 1 < chain.size() && !beside_domain; ++t) {
+    bool separates = false;
+    for(std::size_t t = 0; t + 1 < chain.size() && !separates; ++t) {
       typename CDT::Face_handle f;
       int e = 0;
       if(!cdt.is_edge(result.vertices[chain[t]], result.vertices[chain[t + 1]], f, e)) continue;
       const typename CDT::Face_handle g = f->neighbor(e);
-      beside_domain = (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain());
+      separates = (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain()) ||
+                  region_of[f] != region_of[g];
     }
-    if(!beside_domain)
+    if(!separates)
       fail(name.file(), name.segment_line(i),
-           name.segment_id(i) + " borders no region to mesh: both of its sides are in holes or outside the "
-                                "domain (is a boundary meant to enclose a region open?)");
+           name.segment_id(i) + " borders no region to mesh: both of its sides are in the same hole or outside "
+                                "the domain (is a boundary meant to enclose a region open?)");
   }
   return result;
 }
