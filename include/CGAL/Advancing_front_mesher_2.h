@@ -316,6 +316,7 @@ public:
     }
     CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> >::mark_facets(
       cdt_, seeds_.begin(), seeds_.end(), seeds_mark_);
+    exponent_ = choose_exponent();
     build_front();
     step_edges_.clear(); // only the edges of one step are of interest
     visitor_.on_init(*this);
@@ -380,8 +381,7 @@ public:
       ++active;
       const Vid* id = vid_.find(&*vertex_[v]);
       if(id == nullptr || *id != v || !index_.contains(v)) return false;
-      if(xy_[v][0] != CGAL::to_double(vertex_[v]->point().x()) ||
-         xy_[v][1] != CGAL::to_double(vertex_[v]->point().y()))
+      if(xy_[v][0] != ix(vertex_[v]->point()) || xy_[v][1] != iy(vertex_[v]->point()))
         return false;
     }
     if(active != vid_.size()) return false;
@@ -484,6 +484,41 @@ private:
   double x(Vid v) const { return xy_[v][0]; }
   double y(Vid v) const { return xy_[v][1]; }
 
+  // Internal coordinates and sizes are the user's divided by 2^exponent_,
+  // chosen so that a domain near 1e+300 or 1e-300 is meshed near 1: squared
+  // lengths and circle radii then neither overflow nor underflow, and the
+  // mesh is the one the same domain gets at unit scale. A power of two
+  // scales every double exactly, so the internal coordinates stay exact.
+  double to_internal(const FT& v) const
+  {
+    const double d = CGAL::to_double(v);
+    return exponent_ == 0 ? d : std::ldexp(d, -exponent_);
+  }
+  double ix(const Point& p) const { return to_internal(p.x()); }
+  double iy(const Point& p) const { return to_internal(p.y()); }
+  Point to_user_point(double px, double py) const
+  {
+    if(exponent_ == 0) return Point(px, py);
+    return Point(std::ldexp(px, exponent_), std::ldexp(py, exponent_));
+  }
+
+  // The exponent for the input's largest coordinate magnitude m: 0 while
+  // m lies within 2^(+-100) of 1, where nothing can overflow, and otherwise
+  // the one that brings m to [1, 2), unless some input coordinate would not
+  // survive the scaling exactly (a domain spanning 1e-300 to 1e+300).
+  int choose_exponent() const
+  {
+    double m = 0;
+    for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v)
+      m = (std::max)({m, std::abs(CGAL::to_double(v->point().x())), std::abs(CGAL::to_double(v->point().y()))});
+    if(!(m > 0) || !std::isfinite(m) || (m < std::ldexp(1., 100) && m > std::ldexp(1., -100))) return 0;
+    const int e = std::ilogb(m);
+    for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v)
+      for(const double c : {CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())})
+        if(std::ldexp(std::ldexp(c, -e), e) != c) return 0;
+    return e;
+  }
+
   void clear_state()
   {
     front_.clear();
@@ -529,7 +564,7 @@ private:
   Vid acquire(Vertex_handle vh)
   {
     if(const Vid* known = vid_.find(&*vh)) return *known;
-    const std::array<double, 2> xy = {{CGAL::to_double(vh->point().x()), CGAL::to_double(vh->point().y())}};
+    const std::array<double, 2> xy = {{ix(vh->point()), iy(vh->point())}};
     Vid id;
     if(!free_ids_.empty()) {
       id = free_ids_.back();
@@ -663,21 +698,22 @@ private:
   // through the face
   Circle circle_of(Face_handle f) const
   {
-    auto X = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().x()); };
-    auto Y = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().y()); };
+    auto X = [this, &f](int i) { return ix(f->vertex(i)->point()); };
+    auto Y = [this, &f](int i) { return iy(f->vertex(i)->point()); };
     return circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2));
   }
 
   double target_circumradius(double mx, double my)
   {
     Phase_scope phase(this, FRONT_SELECTION);
-    const FT h = sizing_(Point(mx, my));
-    const double hd = CGAL::to_double(h);
+    const Point m = to_user_point(mx, my);
+    const FT h = sizing_(m);
+    const double hd = to_internal(h);
     if(!(hd > 0) || !std::isfinite(hd)) {
       std::ostringstream os;
       os.precision(17);
-      os << "Advancing_front_mesher_2: the sizing field returned " << hd << " at (" << mx << ", "
-         << my << "); sizes must be positive finite numbers";
+      os << "Advancing_front_mesher_2: the sizing field returned " << CGAL::to_double(h) << " at ("
+         << CGAL::to_double(m.x()) << ", " << CGAL::to_double(m.y()) << "); sizes must be positive finite numbers";
       throw std::invalid_argument(os.str());
     }
     return hd / std::sqrt(3.);
@@ -790,7 +826,7 @@ private:
       if(!f->is_in_domain()) continue;
       domain_faces.push_back(f);
       for(int i = 0; i < 3; ++i) {
-        const double vx = CGAL::to_double(f->vertex(i)->point().x()), vy = CGAL::to_double(f->vertex(i)->point().y());
+        const double vx = ix(f->vertex(i)->point()), vy = iy(f->vertex(i)->point());
         xmin = (std::min)(xmin, vx); xmax = (std::max)(xmax, vx);
         ymin = (std::min)(ymin, vy); ymax = (std::max)(ymax, vy);
       }
@@ -852,9 +888,9 @@ private:
 
   double triangle_area(Face_handle f) const
   {
-    const double ax = CGAL::to_double(f->vertex(0)->point().x()), ay = CGAL::to_double(f->vertex(0)->point().y());
-    const double bx = CGAL::to_double(f->vertex(1)->point().x()), by = CGAL::to_double(f->vertex(1)->point().y());
-    const double cx = CGAL::to_double(f->vertex(2)->point().x()), cy = CGAL::to_double(f->vertex(2)->point().y());
+    const double ax = ix(f->vertex(0)->point()), ay = iy(f->vertex(0)->point());
+    const double bx = ix(f->vertex(1)->point()), by = iy(f->vertex(1)->point());
+    const double cx = ix(f->vertex(2)->point()), cy = iy(f->vertex(2)->point());
     return 0.5 * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
   }
 
@@ -1072,10 +1108,9 @@ private:
     double x0, y0, x1, y1;
     double magnitude; // of the end points' coordinates
 
-    Segment_box(const Point& ps, const Point& pt_)
+    // the end points' internal coordinates
+    Segment_box(double sx, double sy, double tx, double ty)
     {
-      const double sx = CGAL::to_double(ps.x()), sy = CGAL::to_double(ps.y());
-      const double tx = CGAL::to_double(pt_.x()), ty = CGAL::to_double(pt_.y());
       magnitude = (std::max)({std::abs(sx), std::abs(sy), std::abs(tx), std::abs(ty)});
       const double pad = relative_pad * magnitude;
       x0 = (std::min)(sx, tx) - pad; x1 = (std::max)(sx, tx) + pad;
@@ -1139,7 +1174,8 @@ private:
     // its end points' sectors, tested above, matter.
     const bool open1 = !is_front_segment(s1, t), open2 = !is_front_segment(s2, t);
     if(!open1 && !open2) return true;
-    const Segment_box box1(ps1, pt_), box2(ps2, pt_);
+    const double tx = ix(pt_), ty = iy(pt_);
+    const Segment_box box1(ix(ps1), iy(ps1), tx, ty), box2(ix(ps2), iy(ps2), tx, ty);
     const Union_box both(box1, box2);
     // every front edge that can block: those near the disk when it was
     // gathered, and those created since
@@ -1512,8 +1548,8 @@ private:
                                      f->vertex(2)->point(), p))
       return false;
     // f's vertices need not be active: coordinates are read through f
-    auto X = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().x()); };
-    auto Y = [&f](int i) { return CGAL::to_double(f->vertex(i)->point().y()); };
+    auto X = [this, &f](int i) { return ix(f->vertex(i)->point()); };
+    auto Y = [this, &f](int i) { return iy(f->vertex(i)->point()); };
     bool inside = true;
     for(int i = 0; i < 3; ++i)
       if(pred_.orientation(f->vertex(ccw(i))->point(), f->vertex(cw(i))->point(), p) == RIGHT_TURN)
@@ -1533,7 +1569,7 @@ private:
   bool sees_point(const Point& p, double px, double py, double qx, double qy)
   {
     Phase_scope phase(this, VISIBILITY);
-    const Point q(qx, qy);
+    const Point q = to_user_point(qx, qy);
     bool blocked = false;
     ++stats_.edge_octree_queries;
     constraint_octree_.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * length(qx - px, qy - py),
@@ -1556,7 +1592,7 @@ private:
   bool insert_point(Vid a, Vid b, double px, double py, double d, double rho, Vid apex_before)
   {
     if(!std::isfinite(px) || !std::isfinite(py)) return false;
-    const Point p(px, py);
+    const Point p = to_user_point(px, py);
     if(pred_.orientation(pt(a), pt(b), p) != LEFT_TURN) return false;
     Phase_scope cavity_phase(this, CAVITY);
 
@@ -1876,6 +1912,7 @@ private:
   Triangle_octree triangle_octree_;
   Constraint_octree constraint_octree_;
   double meshed_area_ = 0, domain_area_ = 0;
+  int exponent_ = 0; // internal coordinates are the user's divided by 2^exponent_
   Advancing_front_mesh_2::Statistics stats_;
 
   // scratch space reused across steps

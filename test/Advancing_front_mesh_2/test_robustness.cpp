@@ -6,7 +6,8 @@
 // Simple_cartesian<Exact_rational>); and the degenerate inputs of
 // ../shared/data (CDT library test cases, coastlines), each of which must
 // give either a valid mesh or a clear error.
-#include "afm_geometries.h"
+#include "afm_gmsh_geo.h"
+#include "afm_robustness_catalogue.h"
 #include "afm_test_mesh.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
@@ -15,7 +16,9 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 
 namespace {
@@ -24,55 +27,10 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef CGAL::Simple_cartesian<CGAL::Exact_rational> Rational_kernel;
 typedef afm_test::Poly_data Poly_data;
-
-// A geometry with its size: uniform h, or graded from the boundary spacing
-// (grading > 0, at most h).
-struct Case
-{
-  std::string name;
-  Poly_data in;
-  double h;
-  double grading;
-};
-
-// 2^996, about 6.7e299: scaling by a power of two is exact
-const double huge_scale = std::ldexp(1.0, 996);
-
-std::vector<Case> catalogue()
-{
-  using namespace afm_geometry;
-  std::vector<Case> c;
-  c.push_back({"square with hole", square_with_circular_hole(1, 0.25, 0.05), 0.05, 0});
-  c.push_back({"L-shape", l_shape(0.1), 0.1, 0});
-  c.push_back({"two thin plates (Fig. 9)", two_thin_plates(), 1e300, 0.3});
-  c.push_back({"NACA 0012 far field", naca0012_far_field(40, 10, 24), 1e300, 0.3});
-  c.push_back({"four-element airfoil", multi_element_airfoil(10, 32), 1e300, 0.3});
-  c.push_back({"many holes", many_holes(8, 2), 0.05, 0});
-  c.push_back({"nearly collinear boundary (1e-12)", nearly_collinear_boundary(1e-12), 0.05, 0});
-  c.push_back({"slit of width 1e-7", square_with_slit(1e-7, 0.05), 0.05, 0});
-  c.push_back({"boundary spacing varying by 1e4 on one loop", graded_circle(1e4, 0.4), 0.4, 0.3});
-  c.push_back({"boundary spacing varying by 1e4, uniform size 0.2", graded_circle(1e4, 0.4), 0.2, 0});
-  c.push_back({"cocircular and one-ulp-off points", cocircular_points(), 0.5, 0});
-  c.push_back({"huge hole among tiny ones", huge_and_tiny_holes(60), 0.5, 0.3});
-  c.push_back({"offset by 1e9", offset(square_with_circular_hole(1, 0.25, 0.05), 1e9, 1e9), 0.05, 0});
-  c.push_back({"scaled to 1e+300", scaled(square_with_circular_hole(1, 0.25, 0.05), huge_scale), 0.05 * huge_scale, 0});
-  c.push_back({"scaled to 1e-300", scaled(square_with_circular_hole(1, 0.25, 0.05), 1 / huge_scale), 0.05 / huge_scale,
-               0});
-  return c;
-}
-
-template <class K>
-struct Case_size
-{
-  afm_test::Boundary_graded_size<K> graded;
-  double h;
-  bool uniform;
-  Case_size(const Case& c) : graded(c.in, c.grading > 0 ? c.grading : 1, c.h), h(c.h), uniform(c.grading <= 0) {}
-  typename K::FT operator()(const typename K::Point_2& p) const
-  {
-    return uniform ? typename K::FT(h) : graded(p);
-  }
-};
+using afm_robustness::Case;
+using afm_robustness::Case_size;
+using afm_robustness::catalogue;
+using afm_robustness::read_cdt_txt;
 
 template <class K>
 void mesh_catalogue(const std::string& kernel, std::size_t check_front_every)
@@ -82,34 +40,76 @@ void mesh_catalogue(const std::string& kernel, std::size_t check_front_every)
     afm_test::mesh_and_check<CDT>(c.in, Case_size<K>(c), kernel + ": " + c.name, check_front_every);
 }
 
-// The CDT library's format: "nVertices nEdges", the vertices "x y", the
-// edges "i j" (0-based). Holes are implied there by even-odd nesting, which
-// the mesher does not do: every bounded region is meshed.
-bool read_cdt_txt(const std::string& path, Poly_data& out, std::string& why)
+// Inserts `in` and meshes it with the boundary-graded size, or expects
+// insert_poly() to refuse it with `expected_error` (when not empty).
+void mesh_or_refuse(const std::string& file, const Poly_data& in, const std::string& expected_error)
 {
-  std::ifstream in(path);
-  std::size_t nv = 0, ne = 0;
-  if(!(in >> nv >> ne)) {
-    why = "no header";
-    return false;
+  typedef afm_test::Types<Epick>::CDT CDT;
+  CDT cdt;
+  std::string error;
+  CGAL::Advancing_front_mesh_2::IO::Poly_insertion<CDT> inserted;
+  try {
+    inserted = CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt, in);
+  } catch(const CGAL::Advancing_front_mesh_2::IO::Poly_read_error& x) {
+    error = x.what();
   }
-  for(std::size_t i = 0; i < nv; ++i) {
-    double x, y;
-    if(!(in >> x >> y)) {
-      why = "truncated vertices";
-      return false;
+  std::cout << "  " << file << ": " << (error.empty() ? "accepted" : error) << "\n";
+  if(!expected_error.empty()) {
+    AFM_CHECK_MSG(error.find(expected_error) != std::string::npos,
+                  file << ": expected '" << expected_error << "', got '" << error << "'");
+    return;
+  }
+  AFM_CHECK_MSG(error.empty(), file << ": refused: " << error);
+  if(!error.empty()) return;
+  afm_test::Boundary_graded_size<Epick> size(in, 0.3);
+  CGAL::Advancing_front_mesher_2<CDT, afm_test::Boundary_graded_size<Epick> > mesher(cdt, size);
+  mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
+  AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
+  AFM_CHECK_MSG(mesher.statistics().delaunay_repair_flips == 0, file);
+  AFM_CHECK_MSG(cdt.is_valid(), file);
+  const auto report = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
+  std::cout << "    " << report.summary() << "\n";
+  AFM_CHECK_MSG(report.ok, file << ": " << report.summary());
+}
+
+// Removes the closed loops (connected components of the segments) holding
+// the segments ks, and the hole seeds they enclose. Their points stay,
+// unused.
+void remove_loops_of_segments(Poly_data& in, const std::vector<std::size_t>& ks)
+{
+  std::vector<std::size_t> parent(in.points.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto root = [&parent](std::size_t i) {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for(const auto& sg : in.segments) parent[root(sg[0])] = root(sg[1]);
+  std::vector<std::size_t> loops;
+  for(std::size_t k : ks) loops.push_back(root(in.segments[k][0]));
+  std::vector<std::array<std::size_t, 2> > kept;
+  std::vector<std::vector<std::array<std::size_t, 2> > > removed(loops.size());
+  for(const auto& sg : in.segments) {
+    const auto l = std::find(loops.begin(), loops.end(), root(sg[0]));
+    if(l == loops.end()) kept.push_back(sg);
+    else removed[std::size_t(l - loops.begin())].push_back(sg);
+  }
+  // even-odd crossings of a ray to the right: the seeds lie well inside
+  auto inside = [&in](const std::array<double, 2>& h, const std::vector<std::array<std::size_t, 2> >& loop) {
+    bool odd = false;
+    for(const auto& sg : loop) {
+      const auto& a = in.points[sg[0]];
+      const auto& b = in.points[sg[1]];
+      if((a[1] > h[1]) != (b[1] > h[1]) && h[0] < a[0] + (h[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]))
+        odd = !odd;
     }
-    out.points.push_back({{x, y}});
-  }
-  for(std::size_t i = 0; i < ne; ++i) {
-    std::size_t a, b;
-    if(!(in >> a >> b) || a >= nv || b >= nv) {
-      why = "bad edge " + std::to_string(i);
-      return false;
-    }
-    out.segments.push_back({{a, b}});
-  }
-  return true;
+    return odd;
+  };
+  std::vector<std::array<double, 2> > holes;
+  for(const auto& h : in.holes)
+    if(std::none_of(removed.begin(), removed.end(), [&](const auto& loop) { return inside(h, loop); }))
+      holes.push_back(h);
+  in.segments.swap(kept);
+  in.holes.swap(holes);
 }
 
 } // namespace
@@ -129,12 +129,38 @@ AFM_TEST_CASE(test_kernel_matrix_exact_rational)
   mesh_catalogue<Rational_kernel>("Simple_cartesian<Exact_rational>", 0);
 }
 
+// The mesher works in coordinates scaled by a power of two, so a domain near
+// 1e+300 or 1e-300 gets exactly the mesh it gets at unit scale, scaled
+// (before, squared lengths overflowed near 1e+300 and 103 of 115 front
+// edges were closed on existing points).
+AFM_TEST_CASE(test_scale_invariance)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  const Poly_data unit = afm_geometry::square_with_circular_hole(1, 0.25, 0.05);
+  const auto reference = afm_test::mesh_and_check<CDT>(unit, afm_test::uniform<Epick>(0.05), "unit scale");
+  auto sorted_vertices = [](afm_check::Mesh m, double scale) {
+    for(auto& v : m.vertices) v = {{v[0] * scale, v[1] * scale}};
+    std::sort(m.vertices.begin(), m.vertices.end());
+    return m.vertices;
+  };
+  for(const double scale : {afm_robustness::huge_scale, 1 / afm_robustness::huge_scale, std::ldexp(1., 200)}) {
+    std::ostringstream label;
+    label << "scaled by " << scale;
+    const auto r = afm_test::mesh_and_check<CDT>(afm_geometry::scaled(unit, scale),
+                                                 afm_test::uniform<Epick>(0.05 * scale), label.str());
+    AFM_CHECK_MSG(r.mesh.triangles.size() == reference.mesh.triangles.size(),
+                  label.str() << ": " << r.mesh.triangles.size() << " triangles, " << reference.mesh.triangles.size()
+                              << " at unit scale");
+    AFM_CHECK_MSG(sorted_vertices(r.mesh, 1 / scale) == sorted_vertices(reference.mesh, 1), label.str());
+    AFM_CHECK_MSG(r.stats.forced_closures == reference.stats.forced_closures, label.str());
+  }
+}
+
 // Each file of the CDT library's inputs (and the other degenerate inputs of
 // ../shared/data) either meshes into a valid mesh or is refused with a
 // Poly_read_error; which one is pinned, so that a change shows.
 AFM_TEST_CASE(test_shared_data_degenerate_inputs)
 {
-  typedef afm_test::Types<Epick>::CDT CDT;
   const std::string dir = afm_test::shared_data_dir();
   if(dir.empty() || !std::ifstream(dir + "/cdt_artem-ogre/kidney.txt")) {
     std::cout << "  skipped: no ../shared/data/cdt_artem-ogre\n";
@@ -161,38 +187,12 @@ AFM_TEST_CASE(test_shared_data_degenerate_inputs)
     {"corner cases.txt", "segment 1 overlaps segment 0"},
     {"crossing-edges.txt", "crosses"},
   };
-  auto mesh_file = [&](const std::string& file, Poly_data in, const std::string& expected_error) {
-    CDT cdt;
-    std::string error;
-    CGAL::Advancing_front_mesh_2::IO::Poly_insertion<CDT> inserted;
-    try {
-      inserted = CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt, in);
-    } catch(const CGAL::Advancing_front_mesh_2::IO::Poly_read_error& x) {
-      error = x.what();
-    }
-    std::cout << "  " << file << ": " << (error.empty() ? "accepted" : error) << "\n";
-    if(!expected_error.empty()) {
-      AFM_CHECK_MSG(error.find(expected_error) != std::string::npos,
-                    file << ": expected '" << expected_error << "', got '" << error << "'");
-      return;
-    }
-    AFM_CHECK_MSG(error.empty(), file << ": refused: " << error);
-    afm_test::Boundary_graded_size<Epick> size(in, 0.3);
-    CGAL::Advancing_front_mesher_2<CDT, afm_test::Boundary_graded_size<Epick> > mesher(cdt, size);
-    mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
-    AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
-    AFM_CHECK_MSG(mesher.statistics().delaunay_repair_flips == 0, file);
-    AFM_CHECK_MSG(cdt.is_valid(), file);
-    const auto report = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
-    std::cout << "    " << report.summary() << "\n";
-    AFM_CHECK_MSG(report.ok, file << ": " << report.summary());
-  };
   for(const Expected& e : files) {
     Poly_data in;
     std::string why;
     AFM_CHECK_MSG(read_cdt_txt(dir + "/cdt_artem-ogre/" + e.file, in, why), e.file << ": " << why);
     in.origin.file = e.file;
-    mesh_file(e.file, in, e.error);
+    mesh_or_refuse(e.file, in, e.error);
     if(std::string(e.file) == "Constrained Sweden.txt") {
       // the coastline without its open polyline: segments at an end of a
       // chain pruned until only closed loops are left
@@ -206,7 +206,86 @@ AFM_TEST_CASE(test_shared_data_degenerate_inputs)
           else pruned = true;
         in.segments.swap(kept);
       }
-      mesh_file("Constrained Sweden.txt, closed loops only", in, "");
+      mesh_or_refuse("Constrained Sweden.txt, closed loops only", in, "");
     }
   }
+}
+
+// The classic .poly inputs of ../shared/data through the library's reader:
+// Triangle's face.poly (dangling segments, free points, holes), la.poly
+// (layers meeting at vertices of degree 3 and 4), Mesh_2's clusters.poly
+// (segments fanning out of one vertex) and fish-and-rectangle.poly
+// (segments between two holes). Each meshes into a valid mesh or is
+// refused with a clear error; which one is pinned.
+AFM_TEST_CASE(test_shared_data_poly_inputs)
+{
+  const std::string dir = afm_test::shared_data_dir();
+  if(dir.empty() || !std::ifstream(dir + "/triangle_drufat/face.poly")) {
+    std::cout << "  skipped: no ../shared/data/triangle_drufat\n";
+    return;
+  }
+  struct Expected { const char* file; const char* error; };  // error: empty for a mesh
+  const Expected files[] = {
+    {"triangle_drufat/A.poly", ""},
+    {"triangle_drufat/face.poly", ""},
+    {"triangle_drufat/la.poly", ""},
+    {"triangle_drufat/double_hex3.poly", ""},
+    {"triangle_drufat/square_circle_hole.poly", ""},
+    // its outer box is one segment and four free corners: Triangle meshes
+    // the convex hull, which the mesher does not do
+    {"triangle_drufat/box.poly", "the boundary is open at vertex 1"},
+    {"cgal_mesh2/clusters.poly", ""},
+    {"cgal_mesh2/fish-and-rectangle.poly", ""},
+    // no hole section: Triangle's reader refuses it too
+    {"cgal_mesh2/fish.poly", "expected the hole header"},
+  };
+  for(const Expected& e : files) {
+    Poly_data in;
+    try {
+      in = CGAL::Advancing_front_mesh_2::IO::read_poly(dir + "/" + e.file);
+    } catch(const CGAL::Advancing_front_mesh_2::IO::Poly_read_error& x) {
+      std::cout << "  " << e.file << ": " << x.what() << "\n";
+      AFM_CHECK_MSG(*e.error != 0 && std::string(x.what()).find(e.error) != std::string::npos,
+                    e.file << ": " << x.what());
+      continue;
+    }
+    mesh_or_refuse(e.file, in, e.error);
+  }
+  Poly_data med = afm_gmsh_geo::read_plane_surface(dir + "/gmsh/mediterranean.geo");
+  remove_loops_of_segments(med, {2556, 2398});
+  AFM_CHECK_MSG(med.holes.size() == 123, med.holes.size());
+  mesh_or_refuse("gmsh/mediterranean.geo without the two crossing islands", med, "");
+}
+
+// The coastlines of Gmsh's benchmarks (../shared/data/gmsh), read from their
+// .geo scripts with the curves' listed points as polylines: the North
+// Atlantic with 60 islands (ocean.geo, straight lines) and the British Isles
+// (uk.geo, B-spline control polygons) mesh validly; in the Mediterranean two
+// islands' control polygons cross, which insert_poly() refuses; in world.geo
+// the ocean is unbounded in the projection plane, so the largest continent
+// is what is left to mesh. The Mediterranean without the two crossing
+// islands meshes validly.
+AFM_TEST_CASE(test_shared_data_gmsh_coastlines)
+{
+  const std::string dir = afm_test::shared_data_dir();
+  if(dir.empty() || !std::ifstream(dir + "/gmsh/ocean.geo")) {
+    std::cout << "  skipped: no ../shared/data/gmsh\n";
+    return;
+  }
+  struct Expected { const char* file; const char* error; std::size_t holes; };
+  const Expected files[] = {
+    {"gmsh/ocean.geo", "", 60},
+    {"gmsh/uk.geo", "", 39},
+    {"gmsh/mediterranean.geo", "segment 2556 crosses segment 2398", 125},
+    {"gmsh/world.geo", "", 22},
+  };
+  for(const Expected& e : files) {
+    const Poly_data in = afm_gmsh_geo::read_plane_surface(dir + "/" + e.file);
+    AFM_CHECK_MSG(in.holes.size() == e.holes, e.file << ": " << in.holes.size() << " holes");
+    mesh_or_refuse(e.file, in, e.error);
+  }
+  Poly_data med = afm_gmsh_geo::read_plane_surface(dir + "/gmsh/mediterranean.geo");
+  remove_loops_of_segments(med, {2556, 2398});
+  AFM_CHECK_MSG(med.holes.size() == 123, med.holes.size());
+  mesh_or_refuse("gmsh/mediterranean.geo without the two crossing islands", med, "");
 }
