@@ -24,6 +24,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -172,18 +173,23 @@ Outcome decode(const std::string& line)
     f.push_back(line.substr(start, tab - start));
   f.push_back(line.substr(start));
   if(f.size() != 12) return o;
-  o.kind = f[0];
-  o.detail = f[1];
-  o.triangles = std::stoull(f[2]);
-  o.vertices = std::stoull(f[3]);
-  o.forced = std::stoull(f[4]);
-  o.repair_flips = std::stoull(f[5]);
-  o.valid = f[6] == "1";
-  o.mean_quality = std::stod(f[7]);
-  o.min_quality = std::stod(f[8]);
-  o.seconds = std::stod(f[9]);
-  o.fingerprint = std::stoull(f[10]);
-  o.cgal_is_valid = f[11];
+  try {
+    o.kind = f[0];
+    o.detail = f[1];
+    o.triangles = std::stoull(f[2]);
+    o.vertices = std::stoull(f[3]);
+    o.forced = std::stoull(f[4]);
+    o.repair_flips = std::stoull(f[5]);
+    o.valid = f[6] == "1";
+    o.mean_quality = std::stod(f[7]);
+    o.min_quality = std::stod(f[8]);
+    o.seconds = std::stod(f[9]);
+    o.fingerprint = std::stoull(f[10]);
+    o.cgal_is_valid = f[11];
+  } catch(const std::exception&) {
+    o = Outcome();
+    o.detail = "unreadable result: " + one_line(line);
+  }
   return o;
 }
 
@@ -202,10 +208,21 @@ Outcome run_isolated(const Input& input, double time_limit)
   }
   std::cout.flush();
   const pid_t pid = fork();
+  if(pid < 0) {
+    close(fd[0]);
+    close(fd[1]);
+    Outcome o;
+    o.kind = "harness error";
+    o.detail = std::string("fork: ") + std::strerror(errno);
+    return o;
+  }
   if(pid == 0) {
     close(fd[0]);
     child_fd = fd[1];
-    alarm(static_cast<unsigned>(2 * time_limit + 1));
+    if(time_limit > 0) alarm(static_cast<unsigned>(2 * time_limit + 1));
+    // a run that goes astray must not take the machine's memory with it
+    const rlimit memory = {rlim_t(8) << 30, rlim_t(8) << 30};
+    setrlimit(RLIMIT_AS, &memory);
     Outcome o;
     try {
       o = mesh_one<K>(input, time_limit);
@@ -243,6 +260,7 @@ Outcome run_isolated(const Input& input, double time_limit)
     return o;
   }
   Outcome o = decode(result);
+  if(result.empty()) o.detail = "exit status " + std::to_string(WEXITSTATUS(status)) + ", " + stage;
   if(o.kind == "exception") o.detail += " (" + stage + ")";
   return o;
 }

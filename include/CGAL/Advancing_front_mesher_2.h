@@ -708,14 +708,17 @@ private:
     Phase_scope phase(this, FRONT_SELECTION);
     const Point m = to_user_point(mx, my);
     const FT h = sizing_(m);
-    const double hd = to_internal(h);
-    if(!(hd > 0) || !std::isfinite(hd)) {
+    const double user_h = CGAL::to_double(h);
+    if(!(user_h > 0) || !std::isfinite(user_h)) {
       std::ostringstream os;
       os.precision(17);
       os << "Advancing_front_mesher_2: the sizing field returned " << CGAL::to_double(h) << " at ("
          << CGAL::to_double(m.x()) << ", " << CGAL::to_double(m.y()) << "); sizes must be positive finite numbers";
       throw std::invalid_argument(os.str());
     }
+    // a size far beyond the domain's scale may leave the doubles once
+    // scaled: it bounds nothing, as 1e300 does not at unit scale
+    const double hd = (std::max)((std::min)(to_internal(h), 1e300), (std::numeric_limits<double>::min)());
     return hd / std::sqrt(3.);
   }
 
@@ -1593,6 +1596,10 @@ private:
   {
     if(!std::isfinite(px) || !std::isfinite(py)) return false;
     const Point p = to_user_point(px, py);
+    // the point as stored (scaling back may round, where a tiny domain's
+    // points come near the subnormal numbers)
+    px = ix(p);
+    py = iy(p);
     if(pred_.orientation(pt(a), pt(b), p) != LEFT_TURN) return false;
     Phase_scope cavity_phase(this, CAVITY);
 

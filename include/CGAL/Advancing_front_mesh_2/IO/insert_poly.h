@@ -434,14 +434,35 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
   // unmeshed region on both sides is the trace of an open boundary whose
   // ends are not free: an open polyline from one region to another lets the
   // region it was meant to close leak away into the outside or a hole.
+  // the segments with no region to mesh on either side, and their pieces
+  std::vector<std::pair<std::size_t, std::vector<std::pair<typename CDT::Face_handle, int> > > > unmeshed;
+  for(std::size_t k = 0; k < kept.size(); ++k) {
+    const std::size_t i = kept[k];
+    std::vector<std::size_t> chain(1, seg_a(i));
+    chain.insert(chain.end(), inside[k].begin(), inside[k].end());
+    chain.push_back(seg_b(i));
+    std::vector<std::pair<typename CDT::Face_handle, int> > pieces;
+    bool beside_domain = false;
+    for(std::size_t t = 0; t + 1 < chain.size() && !beside_domain; ++t) {
+      typename CDT::Face_handle f;
+      int e = 0;
+      if(!cdt.is_edge(result.vertices[chain[t]], result.vertices[chain[t + 1]], f, e)) continue;
+      const typename CDT::Face_handle g = f->neighbor(e);
+      beside_domain = (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain());
+      pieces.emplace_back(f, e);
+    }
+    if(!beside_domain) unmeshed.emplace_back(i, std::move(pieces));
+  }
+  if(unmeshed.empty()) return result;
+  // The regions not meshed: faces connected across edges that are not
+  // constrained (the infinite faces join through the infinite vertex's
+  // edges, which are never constrained, so the outside is one region).
   std::map<typename CDT::Face_handle, std::size_t> region_of;
   {
     std::size_t next_region = 0;
     std::vector<typename CDT::Face_handle> stack;
     for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
-      // (the infinite faces join through the infinite vertex's edges, which
-      // are never constrained, so the outside is one region)
-      if(!region_of.emplace(f, next_region).second) continue;
+      if((!cdt.is_infinite(f) && f->is_in_domain()) || !region_of.emplace(f, next_region).second) continue;
       const std::size_t r = next_region++;
       stack.push_back(f);
       while(!stack.empty()) {
@@ -453,24 +474,14 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
       }
     }
   }
-  for(std::size_t k = 0; k < kept.size(); ++k) {
-    const std::size_t i = kept[k];
-    std::vector<std::size_t> chain(1, seg_a(i));
-    chain.insert(chain.end(), inside[k].begin(), inside[k].end());
-    chain.push_back(seg_b(i));
+  for(const auto& u : unmeshed) {
     bool separates = false;
-    for(std::size_t t = 0; t + 1 < chain.size() && !separates; ++t) {
-      typename CDT::Face_handle f;
-      int e = 0;
-      if(!cdt.is_edge(result.vertices[chain[t]], result.vertices[chain[t + 1]], f, e)) continue;
-      const typename CDT::Face_handle g = f->neighbor(e);
-      separates = (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain()) ||
-                  region_of[f] != region_of[g];
-    }
+    for(const auto& piece : u.second)
+      separates = separates || region_of[piece.first] != region_of[piece.first->neighbor(piece.second)];
     if(!separates)
-      fail(name.file(), name.segment_line(i),
-           name.segment_id(i) + " borders no region to mesh: both of its sides are in the same hole or outside "
-                                "the domain (is a boundary meant to enclose a region open?)");
+      fail(name.file(), name.segment_line(u.first),
+           name.segment_id(u.first) + " borders no region to mesh: both of its sides are in the same hole or "
+                                      "outside the domain (is a boundary meant to enclose a region open?)");
   }
   return result;
 }
