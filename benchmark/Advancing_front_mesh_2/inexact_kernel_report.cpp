@@ -44,13 +44,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Simple_cartesian<double> Inexact;
 typedef afm_test::Poly_data Poly_data;
 
-struct Input
-{
-  std::string name;
-  Poly_data in;
-  double h;        // uniform size, or the largest size when graded
-  double grading;  // > 0: graded from the boundary spacing
-};
+// an input and its size, as in the tests' kernel matrix
+typedef afm_robustness::Case Input;
 
 // What one run produced, as sent from the child to the parent.
 struct Outcome
@@ -104,8 +99,7 @@ template <class K>
 Outcome mesh_one(const Input& input, double time_limit)
 {
   typedef typename afm_test::Types<K>::CDT CDT;
-  afm_robustness::Case c{input.name, input.in, input.h, input.grading};
-  afm_robustness::Case_size<K> size(c);
+  afm_robustness::Case_size<K> size(input);
   Outcome o;
   CDT cdt;
   CGAL::Advancing_front_mesh_2::IO::Poly_insertion<CDT> inserted;
@@ -267,8 +261,7 @@ Outcome run_isolated(const Input& input, double time_limit)
 
 std::vector<Input> inputs(const std::string& data)
 {
-  std::vector<Input> v;
-  for(const afm_robustness::Case& c : afm_robustness::catalogue()) v.push_back({c.name, c.in, c.h, c.grading});
+  std::vector<Input> v = afm_robustness::catalogue();
   if(data.empty()) return v;
   auto add = [&](const std::string& name, const std::string& file, auto read, double h, double grading) {
     try {
