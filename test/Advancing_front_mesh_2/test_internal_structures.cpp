@@ -2,9 +2,12 @@
 // operations: the id lists of the front, the flat hash map, the point
 // quadtree of the close-point search and the lifted circle octree (with
 // their merging of empty nodes). The mesher's tests exercise them too, but
-// a wrong answer there shows only as a bad mesh far from its cause.
+// a wrong answer there shows only as a bad mesh far from its cause. The
+// trees' checkpoints (save/load, exact to the order of the answers) and the
+// binary streams under them are tested here too.
 #include "afm_test_harness.h"
 
+#include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
@@ -12,11 +15,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <cstdint>
+#include <numeric>
 #include <random>
 #include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace AFMI = CGAL::Advancing_front_mesh_2::internal;
@@ -434,4 +444,795 @@ AFM_TEST_CASE(test_internal_memory_release)
   for(const C& c : cs)
     if(c.in) circles.remove(c.item);
   AFM_CHECK(circles.size() == 0);
+}
+
+// Checkpoints: a saved and reloaded tree must behave exactly as the tree
+// saved, reporting the same points (circles) in the same order under any
+// later operations, since that order breaks the mesher's ties.
+namespace {
+
+void write_int(AFMI::Binary_writer& w, const int& p) { w.write(p); }
+int read_int(AFMI::Binary_reader& r) { return r.read<int>(); }
+
+std::string saved_bytes(const AFMI::Dynamic_point_quadtree& t)
+{
+  std::ostringstream os;
+  AFMI::Binary_writer w(os);
+  t.save(w);
+  return os.str();
+}
+
+std::string saved_bytes(const AFMI::Lifted_circle_octree<int>& t)
+{
+  std::ostringstream os;
+  AFMI::Binary_writer w(os);
+  t.save(w, write_int);
+  return os.str();
+}
+
+void load_bytes(AFMI::Dynamic_point_quadtree& t, const std::string& bytes)
+{
+  std::istringstream is(bytes);
+  AFMI::Binary_reader r(is, "quadtree.bin");
+  t.load(r);
+}
+
+void load_bytes(AFMI::Lifted_circle_octree<int>& t, const std::string& bytes)
+{
+  std::istringstream is(bytes);
+  AFMI::Binary_reader r(is, "octree.bin");
+  t.load(r, read_int);
+}
+
+// The saved forms of the trees, read and written here field by field as
+// save() writes them: to see what a saved tree holds, and to make corrupt
+// ones by hand.
+struct Saved_point_quadtree
+{
+  struct Place { std::int32_t node; std::uint32_t position; };
+  struct Entry { double x, y, reach; std::size_t id; };
+  struct Node
+  {
+    std::array<double, 4> box;
+    double max_reach;
+    std::int32_t first_child, parent, depth;
+    std::vector<Entry> entries;
+  };
+  std::uint32_t tag, version;
+  std::size_t bucket_size;
+  int max_depth;
+  double abs_pad;
+  std::size_t size, number_of_queries;
+  std::vector<Place> places;
+  std::vector<Node> nodes;
+  std::vector<Entry> overflow;
+  std::vector<std::int32_t> free_blocks;
+
+  static void read_entries(AFMI::Binary_reader& r, std::vector<Entry>& v)
+  {
+    v.resize(r.read<std::uint64_t>());
+    for(Entry& e : v) e = Entry{r.read<double>(), r.read<double>(), r.read<double>(), r.read<std::size_t>()};
+  }
+  static void write_entries(AFMI::Binary_writer& w, const std::vector<Entry>& v)
+  {
+    w.write<std::uint64_t>(v.size());
+    for(const Entry& e : v) {
+      w.write(e.x);
+      w.write(e.y);
+      w.write(e.reach);
+      w.write(e.id);
+    }
+  }
+  explicit Saved_point_quadtree(const std::string& bytes)
+  {
+    std::istringstream is(bytes);
+    AFMI::Binary_reader r(is, "quadtree.bin");
+    tag = r.read<std::uint32_t>();
+    version = r.read<std::uint32_t>();
+    bucket_size = r.read<std::size_t>();
+    max_depth = r.read<int>();
+    abs_pad = r.read<double>();
+    size = r.read<std::size_t>();
+    number_of_queries = r.read<std::size_t>();
+    places.resize(r.read<std::uint64_t>());
+    for(Place& p : places) p = Place{r.read<std::int32_t>(), r.read<std::uint32_t>()};
+    nodes.resize(r.read<std::uint64_t>());
+    for(Node& n : nodes) {
+      n.box = r.read<std::array<double, 4> >();
+      n.max_reach = r.read<double>();
+      n.first_child = r.read<std::int32_t>();
+      n.parent = r.read<std::int32_t>();
+      n.depth = r.read<std::int32_t>();
+      read_entries(r, n.entries);
+    }
+    read_entries(r, overflow);
+    r.read_vector(free_blocks, nodes.size());
+    AFM_CHECK(is.peek() == std::char_traits<char>::eof());
+  }
+  std::string bytes() const
+  {
+    std::ostringstream os;
+    AFMI::Binary_writer w(os);
+    w.write(tag);
+    w.write(version);
+    w.write(bucket_size);
+    w.write(max_depth);
+    w.write(abs_pad);
+    w.write(size);
+    w.write(number_of_queries);
+    w.write<std::uint64_t>(places.size());
+    for(const Place& p : places) {
+      w.write(p.node);
+      w.write(p.position);
+    }
+    w.write<std::uint64_t>(nodes.size());
+    for(const Node& n : nodes) {
+      w.write(n.box);
+      w.write(n.max_reach);
+      w.write(n.first_child);
+      w.write(n.parent);
+      w.write(n.depth);
+      write_entries(w, n.entries);
+    }
+    write_entries(w, overflow);
+    w.write_vector(free_blocks);
+    return os.str();
+  }
+};
+
+struct Saved_circle_octree
+{
+  struct Item { std::uint8_t alive; int node; std::size_t position; int payload; };
+  struct Entry { double x, y, r; std::size_t id; };
+  struct Node
+  {
+    std::array<double, 6> box;
+    double max_r, r_split;
+    int first_child, parent, depth, children;
+    std::vector<Entry> entries;
+  };
+  std::uint32_t tag, version;
+  std::size_t bucket_size;
+  int max_depth;
+  double abs_pad;
+  std::size_t size;
+  std::vector<Item> items;
+  std::vector<Node> nodes;
+  std::vector<Entry> overflow;
+  std::array<std::vector<int>, 2> free_blocks;
+  std::vector<std::size_t> free_items;
+
+  static void read_entries(AFMI::Binary_reader& r, std::vector<Entry>& v)
+  {
+    v.resize(r.read<std::uint64_t>());
+    for(Entry& e : v) e = Entry{r.read<double>(), r.read<double>(), r.read<double>(), r.read<std::size_t>()};
+  }
+  static void write_entries(AFMI::Binary_writer& w, const std::vector<Entry>& v)
+  {
+    w.write<std::uint64_t>(v.size());
+    for(const Entry& e : v) {
+      w.write(e.x);
+      w.write(e.y);
+      w.write(e.r);
+      w.write(e.id);
+    }
+  }
+  explicit Saved_circle_octree(const std::string& bytes)
+  {
+    std::istringstream is(bytes);
+    AFMI::Binary_reader r(is, "octree.bin");
+    tag = r.read<std::uint32_t>();
+    version = r.read<std::uint32_t>();
+    bucket_size = r.read<std::size_t>();
+    max_depth = r.read<int>();
+    abs_pad = r.read<double>();
+    size = r.read<std::size_t>();
+    items.resize(r.read<std::uint64_t>());
+    for(Item& it : items) {
+      it.alive = r.read<std::uint8_t>();
+      it.node = r.read<int>();
+      it.position = r.read<std::size_t>();
+      it.payload = it.alive ? r.read<int>() : 0;
+    }
+    nodes.resize(r.read<std::uint64_t>());
+    for(Node& n : nodes) {
+      n.box = r.read<std::array<double, 6> >();
+      n.max_r = r.read<double>();
+      n.r_split = r.read<double>();
+      n.first_child = r.read<int>();
+      n.parent = r.read<int>();
+      n.depth = r.read<int>();
+      n.children = r.read<int>();
+      read_entries(r, n.entries);
+    }
+    read_entries(r, overflow);
+    r.read_vector(free_blocks[0], nodes.size());
+    r.read_vector(free_blocks[1], nodes.size());
+    r.read_vector(free_items, items.size());
+    AFM_CHECK(is.peek() == std::char_traits<char>::eof());
+  }
+  std::string bytes() const
+  {
+    std::ostringstream os;
+    AFMI::Binary_writer w(os);
+    w.write(tag);
+    w.write(version);
+    w.write(bucket_size);
+    w.write(max_depth);
+    w.write(abs_pad);
+    w.write(size);
+    w.write<std::uint64_t>(items.size());
+    for(const Item& it : items) {
+      w.write(it.alive);
+      w.write(it.node);
+      w.write(it.position);
+      if(it.alive) w.write(it.payload);
+    }
+    w.write<std::uint64_t>(nodes.size());
+    for(const Node& n : nodes) {
+      w.write(n.box);
+      w.write(n.max_r);
+      w.write(n.r_split);
+      w.write(n.first_child);
+      w.write(n.parent);
+      w.write(n.depth);
+      w.write(n.children);
+      write_entries(w, n.entries);
+    }
+    write_entries(w, overflow);
+    w.write_vector(free_blocks[0]);
+    w.write_vector(free_blocks[1]);
+    w.write_vector(free_items);
+    return os.str();
+  }
+};
+
+// One random operation, the same on both trees, whose answers (in order)
+// must agree.
+void point_quadtree_step(std::mt19937& rng, const std::vector<std::array<double, 2> >& xy,
+                         AFMI::Dynamic_point_quadtree& a, AFMI::Dynamic_point_quadtree& b)
+{
+  std::uniform_real_distribution<double> coord(0, 1);
+  const std::size_t id = rng() % xy.size();
+  AFM_CHECK(a.contains(id) == b.contains(id));
+  const unsigned op = rng() % 10;
+  if(op < 4) {
+    a.insert(id, xy[id][0], xy[id][1]);
+    b.insert(id, xy[id][0], xy[id][1]);
+  } else if(op < 6) {
+    a.remove(id);
+    b.remove(id);
+  } else if(op == 6) {
+    if(a.contains(id)) {
+      const unsigned kind = rng() % 50;
+      const double reach = kind == 0 ? std::numeric_limits<double>::quiet_NaN() : kind == 1 ? 0.4 : 0.03 * coord(rng);
+      a.set_reach(id, reach);
+      b.set_reach(id, reach);
+    }
+  } else {
+    const double qx = 1.2 * coord(rng) - 0.1, qy = 1.2 * coord(rng) - 0.1, r = 0.1 * coord(rng);
+    if(op < 9) {
+      typedef std::tuple<std::size_t, double, double, bool> Report;
+      std::vector<Report> ra, rb;
+      a.query_with_reach(qx, qy, r, [&ra](std::size_t i, double x, double y, bool in) {
+        ra.emplace_back(i, x, y, in);
+      });
+      b.query_with_reach(qx, qy, r, [&rb](std::size_t i, double x, double y, bool in) {
+        rb.emplace_back(i, x, y, in);
+      });
+      AFM_CHECK(ra == rb);
+    } else {
+      std::vector<std::size_t> ra, rb;
+      a.query(qx, qy, r, ra);
+      b.query(qx, qy, r, rb);
+      AFM_CHECK(ra == rb);
+    }
+  }
+  AFM_CHECK(a.size() == b.size() && a.contains(id) == b.contains(id));
+  if(a.contains(id)) AFM_CHECK(a.reach(id) == b.reach(id));
+  AFM_CHECK(a.number_of_nodes() == b.number_of_nodes() && a.number_of_queries() == b.number_of_queries());
+}
+
+struct Circle { double x, y, r; };
+
+Circle random_circle(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> coord(0, 1);
+  const unsigned kind = rng() % 100;
+  const double x = coord(rng), y = coord(rng), t = coord(rng);
+  if(kind < 2) return Circle{x, y, 10.}; // outside the root box: the overflow list
+  if(kind < 4) return Circle{x, y, t};   // big
+  if(kind < 14) // radii of all scales about one centre: octants that divide the radii
+    return Circle{0.25 + 1e-7 * x, 0.25 + 1e-7 * y, std::pow(10., -6 * t)};
+  return Circle{x, y, 0.03 * t};
+}
+
+// alive: (payload, item) of the circles in both trees
+void circle_octree_step(std::mt19937& rng, AFMI::Lifted_circle_octree<int>& a, AFMI::Lifted_circle_octree<int>& b,
+                        std::vector<std::pair<int, std::size_t> >& alive, int& next_payload)
+{
+  std::uniform_real_distribution<double> coord(0, 1);
+  const unsigned op = rng() % 100;
+  if(op < 35) {
+    const Circle c = random_circle(rng);
+    const std::size_t ia = a.insert(c.x, c.y, c.r, next_payload);
+    const std::size_t ib = b.insert(c.x, c.y, c.r, next_payload);
+    AFM_CHECK(ia == ib);
+    alive.emplace_back(next_payload++, ia);
+  } else if(op < 70) {
+    if(!alive.empty()) {
+      const std::size_t k = rng() % alive.size();
+      AFM_CHECK(a.payload(alive[k].second) == alive[k].first && b.payload(alive[k].second) == alive[k].first);
+      a.remove(alive[k].second);
+      b.remove(alive[k].second);
+      alive[k] = alive.back();
+      alive.pop_back();
+    }
+  } else {
+    const double qx = coord(rng), qy = coord(rng), inflate = (op % 2) ? 0.05 * coord(rng) : 0.;
+    std::vector<int> ra, rb;
+    a.query(qx, qy, inflate, [&ra](int p) { ra.push_back(p); });
+    b.query(qx, qy, inflate, [&rb](int p) { rb.push_back(p); });
+    AFM_CHECK(ra == rb);
+  }
+  AFM_CHECK(a.size() == alive.size() && b.size() == alive.size());
+  AFM_CHECK(a.number_of_nodes() == b.number_of_nodes() && a.overflow_size() == b.overflow_size());
+  AFM_CHECK(a.number_of_radius_divisions() == b.number_of_radius_divisions() && a.is_sparse() == b.is_sparse());
+}
+
+void rebuild_both(AFMI::Lifted_circle_octree<int>& a, AFMI::Lifted_circle_octree<int>& b,
+                  std::vector<std::pair<int, std::size_t> >& alive)
+{
+  std::vector<std::pair<int, std::size_t> > ra, rb;
+  a.rebuild([&ra](int p, std::size_t item) { ra.emplace_back(p, item); });
+  b.rebuild([&rb](int p, std::size_t item) { rb.emplace_back(p, item); });
+  AFM_CHECK(ra == rb && ra.size() == alive.size());
+  alive = ra;
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_internal_point_quadtree_save_load)
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> coord(0, 1);
+  const std::size_t n = 3000;
+  std::vector<std::array<double, 2> > xy(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const double x = coord(rng), y = coord(rng);
+    xy[i] = (i % 40 == 0) ? std::array<double, 2>{{1 + x, -y}} : std::array<double, 2>{{x, y}}; // 1/40 outside
+  }
+  AFMI::Dynamic_point_quadtree a;
+  a.reset(0, 0, 1, 1, 4);
+  // a front sweeping from left to right: the quadrants it leaves merge, and
+  // their blocks of nodes go to the free list
+  for(int round = 0; round < 4; ++round)
+    for(std::size_t i = 0; i < n; ++i) {
+      const double band = xy[i][0] * 5;
+      if(band >= round && band < round + 1) {
+        a.insert(i, xy[i][0], xy[i][1]);
+        if(rng() % 3 == 0) a.set_reach(i, 0.05 * coord(rng));
+      }
+      if(band < round && a.contains(i) && rng() % 8 != 0) a.remove(i);
+      if(i % 100 == 0) {
+        std::vector<std::size_t> out;
+        a.query(coord(rng), coord(rng), 0.05, out);
+      }
+    }
+  for(std::size_t i = 0; i < n; i += 40) a.insert(i, xy[i][0], xy[i][1]);
+  a.remove(40);
+  {
+    const Saved_point_quadtree saved(saved_bytes(a));
+    AFM_CHECK_MSG(!saved.free_blocks.empty() && saved.overflow.size() > 10,
+                  saved.free_blocks.size() << " free blocks, " << saved.overflow.size() << " overflow");
+    AFM_CHECK(saved.bytes() == saved_bytes(a));
+  }
+
+  std::stringstream checkpoint;
+  AFMI::Binary_writer w(checkpoint);
+  a.save(w);
+  w.write_checksum();
+  AFMI::Dynamic_point_quadtree b;
+  b.reset(-3, -3, 3, 3, 2, 5); // overwritten by load()
+  b.insert(7, 0.5, 0.5);
+  AFMI::Binary_reader r(checkpoint, "checkpoint");
+  b.load(r);
+  r.check_checksum();
+  AFM_CHECK(saved_bytes(b) == saved_bytes(a));
+  for(std::size_t i = 0; i < n; ++i) {
+    AFM_CHECK(a.contains(i) == b.contains(i));
+    if(a.contains(i)) AFM_CHECK(a.reach(i) == b.reach(i));
+  }
+
+  std::vector<std::size_t> new_id(n);
+  for(int s = 0; s < 30000; ++s) {
+    if(s == 10000 || s == 20000) {
+      // renamed in random order
+      std::iota(new_id.begin(), new_id.end(), std::size_t(0));
+      std::shuffle(new_id.begin(), new_id.end(), rng);
+      a.rebuild(new_id);
+      b.rebuild(new_id);
+    }
+    if(s == 15000) load_bytes(b, saved_bytes(a)); // a second checkpoint, into a tree in use
+    point_quadtree_step(rng, xy, a, b);
+  }
+  AFM_CHECK(saved_bytes(b) == saved_bytes(a));
+}
+
+AFM_TEST_CASE(test_internal_lifted_circle_octree_save_load)
+{
+  std::mt19937 rng(19);
+  AFMI::Lifted_circle_octree<int> a;
+  a.reset(-1, -1, 2, 2, 3, 4);
+  std::vector<Circle> circles;
+  std::vector<std::pair<int, std::size_t> > alive;
+  int next_payload = 0;
+  for(int i = 0; i < 3000; ++i) {
+    circles.push_back(random_circle(rng));
+    alive.emplace_back(i, a.insert(circles.back().x, circles.back().y, circles.back().r, i));
+  }
+  next_payload = 3000;
+  AFM_CHECK(a.number_of_radius_divisions() > 0 && a.overflow_size() > 0);
+  // the left half emptied: its octants (radii divided) and quadrants merge
+  for(std::size_t k = alive.size(); k-- > 0;)
+    if(circles[alive[k].first].x < 0.5 && (circles[alive[k].first].r < 3 || rng() % 2 == 0)) {
+      a.remove(alive[k].second);
+      alive.erase(alive.begin() + k);
+    }
+  for(int i = 0; i < 300; ++i) {
+    const Circle c = random_circle(rng);
+    const int p = next_payload++;
+    alive.emplace_back(p, a.insert(c.x, c.y, c.r, p));
+  }
+  {
+    const Saved_circle_octree saved(saved_bytes(a));
+    std::size_t dead = 0;
+    for(const auto& it : saved.items) dead += (it.alive == 0);
+    AFM_CHECK_MSG(!saved.free_blocks[0].empty() && !saved.free_blocks[1].empty() && !saved.overflow.empty() && dead > 0,
+                  saved.free_blocks[0].size() << " and " << saved.free_blocks[1].size() << " free blocks, "
+                                              << saved.overflow.size() << " overflow, " << dead << " dead");
+    AFM_CHECK(saved.bytes() == saved_bytes(a));
+  }
+  for(const auto& pi : alive) AFM_CHECK(a.payload(pi.second) == pi.first);
+
+  std::stringstream checkpoint;
+  AFMI::Binary_writer w(checkpoint);
+  a.save(w, write_int);
+  w.write_checksum();
+  AFMI::Lifted_circle_octree<int> b;
+  b.reset(-5, -5, 5, 5, 1, 2, 3); // overwritten by load()
+  b.insert(0.5, 0.5, 0.1, 1);
+  AFMI::Binary_reader r(checkpoint, "checkpoint");
+  b.load(r, read_int);
+  r.check_checksum();
+  AFM_CHECK(saved_bytes(b) == saved_bytes(a));
+  for(const auto& pi : alive) AFM_CHECK(b.payload(pi.second) == pi.first);
+
+  for(int s = 0; s < 30000; ++s) {
+    if(s == 10000 || s == 20000) rebuild_both(a, b, alive);
+    if(s == 15000) load_bytes(b, saved_bytes(a)); // a second checkpoint, into a tree in use
+    circle_octree_step(rng, a, b, alive, next_payload);
+  }
+  AFM_CHECK(saved_bytes(b) == saved_bytes(a));
+}
+
+AFM_TEST_CASE(test_internal_binary_io)
+{
+  // round trip, with the checksum
+  std::vector<std::int32_t> big(20000);
+  std::iota(big.begin(), big.end(), -10000); // read in two chunks
+  const std::vector<double> small{1.5, -2., 1e300, -0.};
+  std::ostringstream os;
+  AFMI::Binary_writer w(os);
+  w.write<std::int32_t>(-7);
+  w.write(3.25);
+  w.write(true);
+  w.write(std::uint64_t(0xfedcba9876543210ull));
+  w.write_vector(small);
+  w.write_vector(std::vector<std::int32_t>());
+  w.write_vector(big);
+  w.write_string("checkpoint");
+  w.write_string("");
+  const std::uint64_t sum = w.checksum();
+  w.write_checksum();
+  AFM_CHECK(w.checksum() == sum);
+  const std::string bytes = os.str();
+  auto read_back = [&](const std::string& data, bool check) {
+    std::istringstream is(data);
+    AFMI::Binary_reader r(is, "test.bin");
+    const std::int32_t i = r.read<std::int32_t>();
+    const double d = r.read<double>();
+    const bool b = r.read<bool>();
+    const std::uint64_t u = r.read<std::uint64_t>();
+    std::vector<double> v1;
+    std::vector<std::int32_t> v2{1, 2}, v3;
+    r.read_vector(v1, 4);
+    r.read_vector(v2, 4);
+    r.read_vector(v3, big.size());
+    const std::string s1 = r.read_string(10), s2 = r.read_string(10);
+    r.check_checksum();
+    if(check) {
+      AFM_CHECK(i == -7 && d == 3.25 && b && u == 0xfedcba9876543210ull);
+      AFM_CHECK(v1 == small && std::signbit(v1[3]) && v2.empty() && v3 == big && s1 == "checkpoint" && s2.empty());
+      AFM_CHECK(is.peek() == std::char_traits<char>::eof());
+    }
+  };
+  read_back(bytes, true);
+  auto message = [&](const std::string& data) -> std::string {
+    try {
+      read_back(data, false);
+    } catch(const afm_test::Failure&) {
+      throw;
+    } catch(const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // every byte matters, including the checksum's (tested at every byte
+  // but those inside the big vector, of which a few are tested)
+  for(std::size_t pos = 0; pos < bytes.size(); ++pos) {
+    if(pos >= 200 && pos + 200 < bytes.size() && pos % 4099 != 0) continue;
+    std::string flipped = bytes;
+    flipped[pos] = char(flipped[pos] ^ (1 << (pos % 8)));
+    const std::string m = message(flipped);
+    AFM_CHECK_MSG(m.compare(0, 10, "test.bin: ") == 0, "byte " << pos << ": " << m);
+    if(pos == 5) AFM_CHECK_MSG(m == "test.bin: corrupt: checksum mismatch", m); // inside the double
+    if(pos == 12) AFM_CHECK_MSG(m == "test.bin: corrupt: a boolean is neither 0 nor 1", m);
+  }
+  for(std::size_t length = 0; length < bytes.size(); ++length) {
+    if(length >= 200 && length + 200 < bytes.size() && length % 4099 != 0) continue;
+    const std::string m = message(bytes.substr(0, length));
+    AFM_CHECK_MSG(m == "test.bin: truncated", "length " << length << ": " << m);
+  }
+  {
+    // a length beyond the bound, or beyond the file, allocates nothing of it
+    std::ostringstream os2;
+    AFMI::Binary_writer w2(os2);
+    w2.write(std::uint64_t(1) << 62);
+    w2.write(std::uint64_t(100000000));
+    w2.write(1.0);
+    w2.write(std::uint64_t(1) << 40);
+    std::istringstream is(os2.str());
+    AFMI::Binary_reader r(is, "big.bin");
+    std::vector<double> v;
+    bool thrown = false;
+    try {
+      r.read_vector(v, std::uint64_t(1) << 50);
+    } catch(const std::runtime_error& e) {
+      thrown = std::string(e.what()).compare(0, 18, "big.bin: corrupt: ") == 0;
+    }
+    AFM_CHECK(thrown && v.capacity() == 0);
+    thrown = false;
+    try {
+      r.read_vector(v, std::uint64_t(1) << 50);
+    } catch(const std::runtime_error& e) {
+      thrown = std::string(e.what()) == "big.bin: truncated";
+    }
+    AFM_CHECK_MSG(thrown && v.capacity() < (1u << 20), v.capacity());
+    std::istringstream is2(os2.str().substr(24));
+    AFMI::Binary_reader r2(is2, "big.bin");
+    thrown = false;
+    try {
+      r2.read_string(std::uint64_t(1) << 50);
+    } catch(const std::runtime_error& e) {
+      thrown = std::string(e.what()) == "big.bin: truncated";
+    }
+    AFM_CHECK(thrown);
+  }
+  {
+    // a stream that fails
+    std::ostringstream bad;
+    bad.setstate(std::ios::badbit);
+    AFMI::Binary_writer w3(bad);
+    bool thrown = false;
+    try {
+      w3.write(1);
+    } catch(const std::runtime_error&) {
+      thrown = true;
+    }
+    AFM_CHECK(thrown);
+  }
+
+  // small trees, with every kind of part: overflow, free blocks, dead items
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> coord(0, 1);
+  AFMI::Dynamic_point_quadtree points;
+  points.reset(0, 0, 1, 1, 2);
+  for(std::size_t i = 0; i < 60; ++i) {
+    const double x = coord(rng), y = coord(rng);
+    points.insert(i, i % 20 == 0 ? 2. : (i % 2 == 0 ? 0.5 * x : 0.5 + 0.5 * x), y);
+    if(i % 3 == 0) points.set_reach(i, 0.1 * coord(rng));
+  }
+  for(std::size_t i = 2; i < 60; i += 2) points.remove(i); // the left half, two of the overflow points
+  AFMI::Lifted_circle_octree<int> circles;
+  circles.reset(-1, -1, 2, 2, 3, 4);
+  std::vector<std::size_t> items, to_remove;
+  for(int i = 0; i < 60; ++i) {
+    const double x = coord(rng), y = coord(rng), t = coord(rng);
+    const Circle c = (i % 3 == 0) ? Circle{0.25 + 0.01 * x, 0.25 + 0.01 * y, 0.1 * std::pow(10., -2 * t)}
+                   : (i % 20 == 1) ? Circle{x, y, 10.} : Circle{x, y, 0.03 * t};
+    items.push_back(circles.insert(c.x, c.y, c.r, i));
+    if((i % 20 != 1 && c.x < 0.5) || i == 21) to_remove.push_back(items.back()); // the left half, an overflow circle
+  }
+  for(std::size_t item : to_remove) circles.remove(item);
+  const std::string good_points = saved_bytes(points), good_circles = saved_bytes(circles);
+  {
+    const Saved_point_quadtree sp(good_points);
+    const Saved_circle_octree sc(good_circles);
+    AFM_CHECK(!sp.free_blocks.empty() && !sp.overflow.empty());
+    AFM_CHECK_MSG(!sc.free_blocks[0].empty() && !sc.free_blocks[1].empty() && !sc.overflow.empty() &&
+                    !sc.free_items.empty(),
+                  sc.free_blocks[0].size() << " " << sc.free_blocks[1].size() << " " << sc.overflow.size());
+  }
+
+  // load() throws (and leaves the tree as it was) on corrupt data
+  auto point_load_error = [&](const std::string& data, bool check_unchanged) -> std::string {
+    AFMI::Dynamic_point_quadtree t;
+    if(check_unchanged) load_bytes(t, good_points);
+    try {
+      load_bytes(t, data);
+    } catch(const std::runtime_error& e) {
+      if(check_unchanged) AFM_CHECK(saved_bytes(t) == good_points);
+      return e.what();
+    }
+    return "";
+  };
+  auto circle_load_error = [&](const std::string& data, bool check_unchanged) -> std::string {
+    AFMI::Lifted_circle_octree<int> t;
+    if(check_unchanged) load_bytes(t, good_circles);
+    try {
+      load_bytes(t, data);
+    } catch(const std::runtime_error& e) {
+      if(check_unchanged) AFM_CHECK(saved_bytes(t) == good_circles);
+      return e.what();
+    }
+    return "";
+  };
+  const std::string bad_points = "quadtree.bin: corrupt point quadtree: ";
+  const std::string bad_circles = "octree.bin: corrupt lifted circle octree: ";
+  auto corrupt_points = [&](const char* what, auto change) {
+    Saved_point_quadtree s(good_points);
+    change(s);
+    AFM_CHECK_MSG(s.bytes() != good_points, what << ": nothing changed");
+    const std::string m = point_load_error(s.bytes(), true);
+    AFM_CHECK_MSG(m.compare(0, bad_points.size(), bad_points) == 0, what << ": " << m);
+  };
+  auto corrupt_circles = [&](const char* what, auto change) {
+    Saved_circle_octree s(good_circles);
+    change(s);
+    AFM_CHECK_MSG(s.bytes() != good_circles, what << ": nothing changed");
+    const std::string m = circle_load_error(s.bytes(), true);
+    AFM_CHECK_MSG(m.compare(0, bad_circles.size(), bad_circles) == 0, what << ": " << m);
+  };
+  typedef Saved_point_quadtree SP;
+  typedef Saved_circle_octree SC;
+  corrupt_points("tag", [](SP& s) { ++s.tag; });
+  corrupt_points("child out of range", [](SP& s) { s.nodes[0].first_child = int(s.nodes.size()) - 3; });
+  corrupt_points("negative child", [](SP& s) { s.nodes[0].first_child = -5; });
+  corrupt_points("cycle", [](SP& s) {
+    for(auto& n : s.nodes)
+      if(!n.entries.empty()) {
+        n.entries.clear();
+        n.first_child = s.nodes[0].first_child;
+        break;
+      }
+  });
+  corrupt_points("parent", [](SP& s) { s.nodes.back().parent = 100000; });
+  corrupt_points("depth", [](SP& s) { s.nodes[1].depth = 2; });
+  corrupt_points("free block in use", [](SP& s) { s.free_blocks.push_back(s.nodes[0].first_child); });
+  corrupt_points("free block twice", [](SP& s) { s.free_blocks.push_back(s.free_blocks[0]); });
+  corrupt_points("lost block", [](SP& s) { s.free_blocks.pop_back(); });
+  corrupt_points("entry id", [](SP& s) { s.overflow[0].id = s.places.size(); });
+  corrupt_points("place", [](SP& s) { ++s.places[s.overflow[0].id].position; });
+  corrupt_points("place node", [](SP& s) { s.places[s.overflow[0].id].node = int(s.nodes.size()); });
+  corrupt_points("absent id", [](SP& s) { s.places[s.overflow[0].id].node = -1; });
+  corrupt_points("size", [](SP& s) { ++s.size; });
+  corrupt_points("no nodes", [](SP& s) { s.nodes.clear(); s.free_blocks.clear(); });
+  corrupt_circles("version", [](SC& s) { ++s.version; });
+  corrupt_circles("child out of range", [](SC& s) { s.nodes[0].first_child = int(s.nodes.size()) - 2; });
+  corrupt_circles("children", [](SC& s) { s.nodes[0].children = 5; });
+  corrupt_circles("children 4 for 8 or 8 for 4", [](SC& s) {
+    for(auto& n : s.nodes)
+      if(n.first_child != -1 && n.parent != -1) {
+        n.children = 12 - n.children;
+        break;
+      }
+  });
+  corrupt_circles("cycle", [](SC& s) {
+    for(auto& n : s.nodes)
+      if(!n.entries.empty()) {
+        n.entries.clear();
+        n.first_child = s.nodes[0].first_child;
+        n.children = 4;
+        break;
+      }
+  });
+  corrupt_circles("free block of 8 as 4", [](SC& s) {
+    s.free_blocks[0].push_back(s.free_blocks[1].back());
+    s.free_blocks[1].pop_back();
+  });
+  corrupt_circles("free block out of range", [](SC& s) { s.free_blocks[1].back() = int(s.nodes.size()) - 4; });
+  corrupt_circles("entry of a dead item", [](SC& s) { s.overflow[0].id = s.free_items[0]; });
+  corrupt_circles("item position", [](SC& s) { ++s.items[s.overflow[0].id].position; });
+  corrupt_circles("item node", [](SC& s) { s.items[s.free_items[0]].node = -7; });
+  corrupt_circles("alive flag", [](SC& s) { s.items[s.free_items[0]].alive = 2; });
+  corrupt_circles("free item alive", [](SC& s) { s.free_items[0] = s.overflow[0].id; });
+  corrupt_circles("free item twice", [](SC& s) { s.free_items[1] = s.free_items[0]; });
+  corrupt_circles("free item out of range", [](SC& s) { s.free_items[0] = s.items.size(); });
+  corrupt_circles("size", [](SC& s) { --s.size; });
+  {
+    // the alive flag of an item that does not go back to its entry
+    const std::string m = circle_load_error([&] {
+      Saved_circle_octree s(good_circles);
+      s.items[s.free_items[0]].alive = 1; // a payload follows now
+      s.free_items.erase(s.free_items.begin());
+      ++s.size;
+      return s.bytes();
+    }(), true);
+    AFM_CHECK_MSG(m.compare(0, bad_circles.size(), bad_circles) == 0, m);
+  }
+  // a cut anywhere: truncated
+  for(std::size_t length = 0; length < good_points.size(); ++length) {
+    const std::string m = point_load_error(good_points.substr(0, length), false);
+    AFM_CHECK_MSG(m == "quadtree.bin: truncated", "length " << length << ": " << m);
+  }
+  for(std::size_t length = 0; length < good_circles.size(); ++length) {
+    const std::string m = circle_load_error(good_circles.substr(0, length), false);
+    AFM_CHECK_MSG(m == "octree.bin: truncated", "length " << length << ": " << m);
+  }
+  // Any changed byte: load() throws std::runtime_error, or accepts a tree
+  // that the operations can use (ASan and UBSan watch them).
+  auto changed = [](const std::string& good, std::size_t pos) {
+    std::string data = good;
+    data[pos] = (pos % 3 == 0) ? char(0xff) : char(data[pos] ^ (1 << (pos % 8)));
+    return data;
+  };
+  std::size_t accepted = 0, refused = 0;
+  for(std::size_t pos = 0; pos < good_points.size(); ++pos) {
+    AFMI::Dynamic_point_quadtree t;
+    try {
+      load_bytes(t, changed(good_points, pos));
+    } catch(const std::runtime_error&) {
+      ++refused;
+      continue;
+    }
+    ++accepted;
+    for(std::size_t i = 0; i < 80; ++i) {
+      t.insert(i, coord(rng), coord(rng));
+      if(i % 2 == 0) t.set_reach(i, 0.1 * coord(rng));
+      if(i % 8 == 0) {
+        std::vector<std::size_t> out;
+        t.query(coord(rng), coord(rng), 0.2, out);
+        t.query_with_reach(coord(rng), coord(rng), 0.1, [](std::size_t, double, double, bool) {});
+      }
+    }
+    struct Swap_pairs { std::size_t operator[](std::size_t i) const { return i ^ 1; } };
+    t.rebuild(Swap_pairs());
+    for(std::size_t i = 0; i < 80; ++i) t.remove(i);
+    AFM_CHECK(t.size() == 0);
+  }
+  AFM_CHECK(accepted > 0 && refused > 0);
+  accepted = refused = 0;
+  for(std::size_t pos = 0; pos < good_circles.size(); ++pos) {
+    AFMI::Lifted_circle_octree<int> t;
+    try {
+      load_bytes(t, changed(good_circles, pos));
+    } catch(const std::runtime_error&) {
+      ++refused;
+      continue;
+    }
+    ++accepted;
+    std::vector<std::size_t> mine;
+    for(int i = 0; i < 20; ++i) {
+      const Circle c = random_circle(rng);
+      mine.push_back(t.insert(c.x, c.y, c.r, -1));
+      if(i % 4 == 0) t.query(coord(rng), coord(rng), 0.05, [](int) {});
+    }
+    for(std::size_t k = 0; k < mine.size(); k += 2) t.remove(mine[k]);
+    std::vector<std::size_t> all;
+    t.rebuild([&all](int, std::size_t item) { all.push_back(item); });
+    for(std::size_t item : all) t.remove(item);
+    AFM_CHECK(t.size() == 0);
+  }
+  AFM_CHECK(accepted > 0 && refused > 0);
 }

@@ -13,6 +13,7 @@
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 
 #include <algorithm>
 #include <array>
@@ -20,6 +21,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -234,6 +237,86 @@ public:
   std::size_t number_of_queries() const { return number_of_queries_; }
   std::size_t number_of_nodes() const { return nodes_.size(); }
 
+  // Checkpoints. A resumed run must take the decisions of an uninterrupted
+  // one, and the order in which the queries report the points (which breaks
+  // the mesher's ties) depends on the tree's layout: the history of its
+  // insertions, splits, merges and free blocks. So save() writes the whole
+  // state exactly (every node with its entries in order, the free blocks,
+  // the places of all ids, the overflow list, the scalars), not only the
+  // points held, and after load() every sequence of operations behaves as
+  // on the saved tree. The format is native (see Binary_io.h).
+
+  /// Writes the tree to `w`.
+  void save(Binary_writer& w) const
+  {
+    w.write(format_tag);
+    w.write(format_version);
+    w.write(bucket_size_);
+    w.write(max_depth_);
+    w.write(abs_pad_);
+    w.write(size_);
+    w.write(number_of_queries_);
+    w.write<std::uint64_t>(places_.size());
+    for(const Place& pl : places_) {
+      w.write(pl.node);
+      w.write(pl.position);
+    }
+    w.write<std::uint64_t>(nodes_.size());
+    for(const Node& n : nodes_) {
+      w.write(n.box);
+      w.write(n.max_reach);
+      w.write(n.first_child);
+      w.write(n.parent);
+      w.write(n.depth);
+      save_entries(w, n.entries);
+    }
+    save_entries(w, overflow_);
+    w.write_vector(free_blocks_);
+  }
+
+  /// Replaces the tree by one written by `save()`. The structure read is
+  /// checked, so that a corrupt file throws (`r.fail()`) instead of making
+  /// a later operation crash; the tree is left unchanged then.
+  void load(Binary_reader& r)
+  {
+    Dynamic_point_quadtree t;
+    if(r.read<std::uint32_t>() != format_tag) corrupt(r, "not a saved point quadtree");
+    if(r.read<std::uint32_t>() != format_version) corrupt(r, "unknown format version");
+    t.bucket_size_ = r.read<std::size_t>();
+    t.max_depth_ = r.read<int>();
+    t.abs_pad_ = r.read<double>();
+    t.size_ = r.read<std::size_t>();
+    t.number_of_queries_ = r.read<std::size_t>();
+    const std::uint64_t number_of_places = r.read<std::uint64_t>();
+    if(number_of_places > t.places_.max_size()) corrupt(r, "too many ids");
+    // the vectors grow as their elements are read: a corrupt length costs
+    // no more memory than the file holds
+    for(std::uint64_t i = 0; i < number_of_places; ++i) {
+      Place pl;
+      pl.node = r.read<std::int32_t>();
+      pl.position = r.read<std::uint32_t>();
+      t.places_.push_back(pl);
+    }
+    const std::uint64_t number_of_nodes = r.read<std::uint64_t>();
+    if(number_of_nodes == 0 || number_of_nodes > std::uint64_t((std::numeric_limits<std::int32_t>::max)()))
+      corrupt(r, "number of nodes out of range");
+    t.nodes_.clear();
+    for(std::uint64_t i = 0; i < number_of_nodes; ++i) {
+      t.nodes_.emplace_back();
+      Node& n = t.nodes_.back();
+      n.box = r.read<std::array<double, 4> >();
+      n.max_reach = r.read<double>();
+      n.first_child = r.read<std::int32_t>();
+      n.parent = r.read<std::int32_t>();
+      n.depth = r.read<std::int32_t>();
+      load_entries(r, n.entries, number_of_places);
+    }
+    load_entries(r, t.overflow_, number_of_places);
+    r.read_vector(t.free_blocks_, number_of_nodes / 4);
+    t.check_loaded(r);
+    *this = std::move(t);
+  }
+
 private:
   double padding(double x, double y) const { return 1e-12 * (std::abs(x) + std::abs(y)) + abs_pad_; }
 
@@ -318,6 +401,107 @@ private:
       nodes_[c].max_reach = (std::max)(nodes_[c].max_reach, e.reach);
     }
     // a child that is still too full splits on its next insertion
+  }
+
+  // tells a saved quadtree from other data (format_version: of its layout)
+  static constexpr std::uint32_t format_tag = 0x51504641; // "AFPQ" read as little endian
+  static constexpr std::uint32_t format_version = 1;
+
+  [[noreturn]] static void corrupt(const Binary_reader& r, const std::string& what)
+  {
+    r.fail("corrupt point quadtree: " + what);
+  }
+
+  static void save_entries(Binary_writer& w, const std::vector<Entry>& v)
+  {
+    // field by field: the padding of a struct would make the bytes (and the
+    // checksum) indeterminate
+    w.write<std::uint64_t>(v.size());
+    for(const Entry& e : v) {
+      w.write(e.x);
+      w.write(e.y);
+      w.write(e.reach);
+      w.write(e.id);
+    }
+  }
+
+  static void load_entries(Binary_reader& r, std::vector<Entry>& v, std::uint64_t number_of_places)
+  {
+    const std::uint64_t n = r.read<std::uint64_t>();
+    if(n > number_of_places) corrupt(r, "more entries in a leaf than ids");
+    v.clear();
+    for(std::uint64_t i = 0; i < n; ++i) {
+      Entry e;
+      e.x = r.read<double>();
+      e.y = r.read<double>();
+      e.reach = r.read<double>();
+      e.id = r.read<std::size_t>();
+      v.push_back(e);
+    }
+  }
+
+  // Checks that a loaded tree is one that the operations can have made, as
+  // far as an inconsistency could make them read out of bounds or loop: the
+  // nodes reachable from the root form a tree (children blocks of 4 in
+  // range, each node reached once, with its parent and depth), every other
+  // node is in exactly one free block, and the entries and the places of the
+  // ids held point at each other.
+  void check_loaded(const Binary_reader& r) const
+  {
+    const std::size_t n = nodes_.size();
+    for(const Node& node : nodes_) {
+      if(node.parent < -1 || node.parent >= static_cast<long long>(n)) corrupt(r, "parent index out of range");
+      if(node.first_child != no_child && (node.first_child < 1 || static_cast<std::size_t>(node.first_child) + 4 > n))
+        corrupt(r, "child index out of range");
+    }
+    if(nodes_[0].parent != -1 || nodes_[0].depth != 0) corrupt(r, "root with a parent");
+    std::vector<char> seen(n, 0);
+    seen[0] = 1;
+    std::vector<std::int32_t> stack(1, 0);
+    while(!stack.empty()) {
+      const std::int32_t i = stack.back();
+      stack.pop_back();
+      const Node& node = nodes_[i];
+      if(node.first_child == no_child) continue;
+      if(!node.entries.empty()) corrupt(r, "inner node with entries");
+      for(std::int32_t c = node.first_child; c < node.first_child + 4; ++c) {
+        if(seen[c]) corrupt(r, "node reached twice");
+        seen[c] = 1;
+        if(nodes_[c].parent != i || nodes_[c].depth != node.depth + 1) corrupt(r, "wrong parent or depth");
+        stack.push_back(c);
+      }
+    }
+    for(std::int32_t first : free_blocks_) {
+      if(first < 1 || static_cast<std::size_t>(first) + 4 > n) corrupt(r, "free block out of range");
+      for(std::int32_t c = first; c < first + 4; ++c) {
+        if(seen[c]) corrupt(r, "free node in use or in two free blocks");
+        seen[c] = 1;
+        if(nodes_[c].first_child != no_child || !nodes_[c].entries.empty()) corrupt(r, "free node in use");
+      }
+    }
+    if(std::find(seen.begin(), seen.end(), 0) != seen.end()) corrupt(r, "node neither in the tree nor free");
+
+    std::size_t held = 0;
+    for(const Place& pl : places_) {
+      if(pl.node == absent) continue;
+      ++held;
+      if(pl.node != overflow_node && (pl.node < 0 || static_cast<std::size_t>(pl.node) >= n))
+        corrupt(r, "node of an id out of range");
+    }
+    std::size_t entries = 0;
+    auto check_entries = [&](const std::vector<Entry>& v, std::int32_t node) {
+      for(std::size_t pos = 0; pos < v.size(); ++pos) {
+        const std::size_t id = v[pos].id;
+        if(id >= places_.size() || places_[id].node != node || places_[id].position != pos)
+          corrupt(r, "entry and place of its id disagree");
+      }
+      entries += v.size();
+    };
+    for(std::size_t i = 0; i < n; ++i) check_entries(nodes_[i].entries, static_cast<std::int32_t>(i));
+    check_entries(overflow_, overflow_node);
+    // each entry names a distinct id (the one whose place is that entry):
+    // with as many entries as ids held, every id held has its entry
+    if(entries != held || size_ != held) corrupt(r, "size differs from the number of points held");
   }
 
   std::vector<Node> nodes_;

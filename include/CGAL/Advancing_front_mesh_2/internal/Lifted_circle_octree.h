@@ -13,12 +13,16 @@
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -134,6 +138,17 @@ public:
   }
 
   const Payload& payload(Item_id id) const { return items_[id].payload; }
+
+  /// Whether `id` names a circle the tree holds.
+  bool is_alive(Item_id id) const { return id < items_.size() && items_[id].alive; }
+
+  /// Calls `f(payload)` for every circle the tree holds, in item order.
+  template <class Function>
+  void for_each_payload(Function f) const
+  {
+    for(const Item& it : items_)
+      if(it.alive) f(it.payload);
+  }
 
   Item_id insert(double cx, double cy, double r, const Payload& p)
   {
@@ -256,6 +271,104 @@ public:
     }
   }
 
+  // Checkpoints. A resumed run must take the decisions of an uninterrupted
+  // one, and the order in which query() reports the circles (which breaks
+  // the mesher's ties) depends on the tree's layout: the history of its
+  // insertions, splits, merges and free lists. So save() writes the whole
+  // state exactly (every node with its entries in order, the free lists, the
+  // removed items' slots, the overflow list, the scalars), not only the
+  // circles held, and after load() every sequence of operations behaves as
+  // on the saved tree. The format is native (see Binary_io.h).
+
+  /// Writes the tree to `w`; `write_payload(w, p)` writes the payload `p`
+  /// of a live item (a removed item's payload, which may be a dangling
+  /// handle, is not written).
+  template <class PayloadWriter>
+  void save(Binary_writer& w, PayloadWriter write_payload) const
+  {
+    w.write(format_tag);
+    w.write(format_version);
+    w.write(bucket_size_);
+    w.write(max_depth_);
+    w.write(abs_pad_);
+    w.write(size_);
+    w.write<std::uint64_t>(items_.size());
+    for(const Item& it : items_) {
+      w.write<std::uint8_t>(it.alive ? 1 : 0); // 0: removed, no payload follows
+      w.write(it.node);
+      w.write(it.position);
+      if(it.alive) write_payload(w, it.payload);
+    }
+    w.write<std::uint64_t>(nodes_.size());
+    for(const Node& n : nodes_) {
+      w.write(n.box);
+      w.write(n.max_r);
+      w.write(n.r_split);
+      w.write(n.first_child);
+      w.write(n.parent);
+      w.write(n.depth);
+      w.write(n.children);
+      save_entries(w, n.entries);
+    }
+    save_entries(w, overflow_);
+    w.write_vector(free_blocks_[0]);
+    w.write_vector(free_blocks_[1]);
+    w.write_vector(free_items_);
+  }
+
+  /// Replaces the tree by one written by `save()`; `read_payload(r)`
+  /// returns a payload written by the `write_payload` of `save()`. Removed
+  /// items get a default-constructed payload. The structure read is
+  /// checked, so that a corrupt file throws (`r.fail()`) instead of making
+  /// a later operation crash; the tree is left unchanged then.
+  template <class PayloadReader>
+  void load(Binary_reader& r, PayloadReader read_payload)
+  {
+    Lifted_circle_octree t;
+    if(r.read<std::uint32_t>() != format_tag) corrupt(r, "not a saved lifted circle octree");
+    if(r.read<std::uint32_t>() != format_version) corrupt(r, "unknown format version");
+    t.bucket_size_ = r.read<std::size_t>();
+    t.max_depth_ = r.read<int>();
+    t.abs_pad_ = r.read<double>();
+    t.size_ = r.read<std::size_t>();
+    const std::uint64_t number_of_items = r.read<std::uint64_t>();
+    if(number_of_items > t.items_.max_size()) corrupt(r, "too many items");
+    // the vectors grow as their elements are read: a corrupt length costs
+    // no more memory than the file holds
+    for(std::uint64_t i = 0; i < number_of_items; ++i) {
+      t.items_.emplace_back();
+      Item& it = t.items_.back();
+      const std::uint8_t alive = r.read<std::uint8_t>();
+      if(alive > 1) corrupt(r, "item neither live nor removed");
+      it.alive = (alive == 1);
+      it.node = r.read<int>();
+      it.position = r.read<std::size_t>();
+      if(it.alive) it.payload = read_payload(r);
+    }
+    const std::uint64_t number_of_nodes = r.read<std::uint64_t>();
+    if(number_of_nodes == 0 || number_of_nodes > std::uint64_t((std::numeric_limits<int>::max)()))
+      corrupt(r, "number of nodes out of range");
+    t.nodes_.clear();
+    for(std::uint64_t i = 0; i < number_of_nodes; ++i) {
+      t.nodes_.emplace_back();
+      Node& n = t.nodes_.back();
+      n.box = r.read<std::array<double, 6> >();
+      n.max_r = r.read<double>();
+      n.r_split = r.read<double>();
+      n.first_child = r.read<int>();
+      n.parent = r.read<int>();
+      n.depth = r.read<int>();
+      n.children = r.read<int>();
+      load_entries(r, n.entries, number_of_items);
+    }
+    load_entries(r, t.overflow_, number_of_items);
+    r.read_vector(t.free_blocks_[0], number_of_nodes / 4);
+    r.read_vector(t.free_blocks_[1], number_of_nodes / 8);
+    r.read_vector(t.free_items_, number_of_items);
+    t.check_loaded(r);
+    *this = std::move(t);
+  }
+
 private:
   template <class Function>
   void test_entry(const Entry& e, double qx, double qy, double inflate, Function& f) const
@@ -366,6 +479,118 @@ private:
     }
     // no recursive split here: a child that is still too full splits on its
     // next insertion, which bounds the work of one insertion
+  }
+
+  // tells a saved octree from other data (format_version: of its layout)
+  static constexpr std::uint32_t format_tag = 0x434c4641; // "AFLC" read as little endian
+  static constexpr std::uint32_t format_version = 1;
+
+  [[noreturn]] static void corrupt(const Binary_reader& r, const std::string& what)
+  {
+    r.fail("corrupt lifted circle octree: " + what);
+  }
+
+  static void save_entries(Binary_writer& w, const std::vector<Entry>& v)
+  {
+    // field by field: the padding of a struct would make the bytes (and the
+    // checksum) indeterminate
+    w.write<std::uint64_t>(v.size());
+    for(const Entry& e : v) {
+      w.write(e.x);
+      w.write(e.y);
+      w.write(e.r);
+      w.write(e.id);
+    }
+  }
+
+  static void load_entries(Binary_reader& r, std::vector<Entry>& v, std::uint64_t number_of_items)
+  {
+    const std::uint64_t n = r.read<std::uint64_t>();
+    if(n > number_of_items) corrupt(r, "more entries in a leaf than items");
+    v.clear();
+    for(std::uint64_t i = 0; i < n; ++i) {
+      Entry e;
+      e.x = r.read<double>();
+      e.y = r.read<double>();
+      e.r = r.read<double>();
+      e.id = r.read<Item_id>();
+      v.push_back(e);
+    }
+  }
+
+  // Checks that a loaded tree is one that the operations can have made, as
+  // far as an inconsistency could make them read out of bounds or loop: the
+  // nodes reachable from the root form a tree (children blocks of 4 or 8 in
+  // range, each node reached once, with its parent and depth), every other
+  // node is in exactly one free block, the entries and the live items point
+  // at each other, and the free items are the removed ones.
+  void check_loaded(const Binary_reader& r) const
+  {
+    const std::size_t n = nodes_.size();
+    for(const Node& node : nodes_) {
+      if(node.children != 0 && node.children != 4 && node.children != 8) corrupt(r, "children neither 4 nor 8");
+      if(node.parent < -1 || node.parent >= static_cast<long long>(n)) corrupt(r, "parent index out of range");
+      if(node.first_child != no_child &&
+         (node.children == 0 || node.first_child < 1 ||
+          static_cast<std::size_t>(node.first_child) + static_cast<std::size_t>(node.children) > n))
+        corrupt(r, "child index out of range");
+    }
+    if(nodes_[0].parent != -1 || nodes_[0].depth != 0) corrupt(r, "root with a parent");
+    std::vector<char> seen(n, 0);
+    seen[0] = 1;
+    std::vector<int> stack(1, 0);
+    while(!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      const Node& node = nodes_[i];
+      if(node.first_child == no_child) continue;
+      if(!node.entries.empty()) corrupt(r, "inner node with entries");
+      for(int c = node.first_child; c < node.first_child + node.children; ++c) {
+        if(seen[c]) corrupt(r, "node reached twice");
+        seen[c] = 1;
+        if(nodes_[c].parent != i || nodes_[c].depth != node.depth + 1) corrupt(r, "wrong parent or depth");
+        stack.push_back(c);
+      }
+    }
+    for(int k = 0; k < 2; ++k) {
+      const int block = k ? 8 : 4;
+      for(int first : free_blocks_[k]) {
+        if(first < 1 || static_cast<std::size_t>(first) + block > n) corrupt(r, "free block out of range");
+        for(int c = first; c < first + block; ++c) {
+          if(seen[c]) corrupt(r, "free node in use or in two free blocks");
+          seen[c] = 1;
+          if(nodes_[c].first_child != no_child || !nodes_[c].entries.empty()) corrupt(r, "free node in use");
+        }
+      }
+    }
+    if(std::find(seen.begin(), seen.end(), 0) != seen.end()) corrupt(r, "node neither in the tree nor free");
+
+    std::size_t alive = 0;
+    for(const Item& it : items_) {
+      alive += it.alive ? 1 : 0;
+      if(it.node != overflow_node && (it.node < 0 || static_cast<std::size_t>(it.node) >= n))
+        corrupt(r, "item's node out of range");
+    }
+    std::size_t entries = 0;
+    auto check_entries = [&](const std::vector<Entry>& v, int node) {
+      for(std::size_t pos = 0; pos < v.size(); ++pos) {
+        const Item_id id = v[pos].id;
+        if(id >= items_.size() || !items_[id].alive || items_[id].node != node || items_[id].position != pos)
+          corrupt(r, "entry and item disagree");
+      }
+      entries += v.size();
+    };
+    for(std::size_t i = 0; i < n; ++i) check_entries(nodes_[i].entries, static_cast<int>(i));
+    check_entries(overflow_, overflow_node);
+    // each entry names a distinct live item (the one pointing at it): with
+    // as many entries as live items, every live item has its entry
+    if(entries != alive || size_ != alive) corrupt(r, "size differs from the number of items held");
+    if(free_items_.size() != items_.size() - alive) corrupt(r, "free items differ from the removed ones");
+    std::vector<char> freed(items_.size(), 0);
+    for(Item_id id : free_items_) {
+      if(id >= items_.size() || items_[id].alive || freed[id]) corrupt(r, "free items differ from the removed ones");
+      freed[id] = 1;
+    }
   }
 
   std::vector<Node> nodes_;
