@@ -10,6 +10,13 @@
 // the sources of FILE (one "x y h" per line), limited by the gradation G
 // (default 0.2) and, with --size, bounded above by H.
 //
+// Streaming (meshes larger than memory): --stream hands finished triangles
+// to the output files while meshing, so that memory holds only the part
+// near the front; --checkpoint-every K FILE also writes the mesher's state
+// to FILE after every K more triangles, and --resume FILE continues such a
+// run later (with the options stored in FILE), giving the same files as an
+// uninterrupted run.
+//
 // Exit codes: 0 success; 1 invalid input (one line "afmesh_2: error:
 // FILE[:LINE]: what is wrong" on stderr); 2 bad usage; 3 internal error.
 
@@ -21,6 +28,7 @@
 #include <CGAL/Advancing_front_mesh_2/IO/write_quality_histogram.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
+#include <CGAL/Advancing_front_mesh_2/IO/Streaming_mesh_writer.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -44,6 +52,7 @@
 #include <list>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <unistd.h>
 #include <vector>
 
@@ -75,7 +84,21 @@ struct Options
   std::size_t smooth = 0;
   std::string svg_color = "plain";
   std::string histogram;
+  bool stream = false;
+  std::size_t checkpoint_every = 0; // triangles, 0: no checkpoints
+  std::string checkpoint_file;
+  bool stop_after_checkpoint = false;
+  std::string resume;               // checkpoint to resume from
+  std::string arguments;            // the run's own arguments, '\0'-separated, stored in checkpoints
 };
+
+// peak resident memory of the process, in bytes
+double peak_rss_bytes()
+{
+  struct rusage u;
+  if(getrusage(RUSAGE_SELF, &u) != 0) return std::nan("");
+  return 1024. * double(u.ru_maxrss); // kilobytes on Linux
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t)
 {
@@ -194,20 +217,93 @@ int run(const Options& opt)
 
   Progress_visitor progress;
   progress.enabled = isatty(2) != 0;
-  CGAL::Advancing_front_mesher_2<CDT, Cli_sizing_field<K>, Progress_visitor> mesher(cdt, sizing, progress);
+  // a resumed run meshes in an empty triangulation: the state comes from
+  // the checkpoint; the input was read again for the size field only
+  CDT resumed_cdt;
+  CGAL::Advancing_front_mesher_2<CDT, Cli_sizing_field<K>, Progress_visitor> mesher(
+    opt.resume.empty() ? cdt : resumed_cdt, sizing, progress);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_pocket_priority(!opt.no_pocket_priority);
   mesher.set_time_limit(opt.time_limit);
   mesher.set_iteration_limit(opt.max_steps);
+  std::unique_ptr<AFM::IO::Streaming_mesh_writer<Point> > writer;
+  if(opt.stream) {
+    try {
+      if(opt.resume.empty()) {
+        writer.reset(new AFM::IO::Streaming_mesh_writer<Point>(opt.outputs));
+      } else {
+        typedef CGAL::Advancing_front_mesher_2<CDT, Cli_sizing_field<K>, Progress_visitor> Mesher;
+        writer = AFM::IO::Streaming_mesh_writer<Point>::resume(Mesher::read_checkpoint_info(opt.resume).sink_state);
+      }
+    } catch(const std::exception& e) {
+      throw Input_error((opt.resume.empty() ? std::string("output") : opt.resume) + ": " + e.what());
+    }
+    mesher.set_output_sink(writer.get());
+    if(!opt.resume.empty()) {
+      try {
+        mesher.resume(opt.resume);
+      } catch(const std::runtime_error& e) {
+        throw Input_error(e.what());
+      }
+    }
+    if(opt.checkpoint_every > 0)
+      mesher.set_checkpoint(opt.checkpoint_every, opt.checkpoint_file, opt.arguments, opt.stop_after_checkpoint);
+  }
   const auto t_mesh = std::chrono::steady_clock::now();
   const AFM::Mesh_return_code rc = mesher.refine_mesh();
-  if(rc != AFM::MESH_COMPLETE)
+  if(rc == AFM::TIME_LIMIT_REACHED || rc == AFM::ITERATION_LIMIT_REACHED)
     std::cerr << "afmesh_2: note: " << opt.input << ": "
               << (rc == AFM::TIME_LIMIT_REACHED ? "--time-limit" : "--max-steps")
               << " reached: the rest of the front was closed on existing points (valid, coarser there)\n";
   mesher.visitor().done();
   const double t_meshing = seconds_since(t_mesh);
   const AFM::Statistics& st = mesher.statistics();
+  if(rc != AFM::STOPPED_AT_CHECKPOINT && st.number_of_faces == 0)
+    throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
+  if(rc == AFM::STOPPED_AT_CHECKPOINT) {
+    std::cerr << "afmesh_2: note: stopped after writing the checkpoint " << opt.checkpoint_file << " ("
+              << st.number_of_faces << " triangles written so far); continue with: afmesh_2 --resume "
+              << opt.checkpoint_file << "\n";
+  } else if(writer) {
+    try {
+      writer->close();
+    } catch(const std::exception& e) {
+      std::cerr << program << ": error: " << e.what() << "\n";
+      return 3;
+    }
+  }
+  if(opt.stream) {
+    // the mesh is in the files: no quality figures, no pictures
+    if(opt.report)
+      (opt.stats ? std::cerr : std::cout)
+        << (opt.resume.empty() ? opt.input : opt.resume) << ": " << st.number_of_vertices << " vertices, "
+        << st.number_of_faces << " triangles streamed in " << t_meshing << " s; at most "
+        << st.largest_triangles_in_memory << " triangles in memory, peak memory "
+        << peak_rss_bytes() / 1048576 << " MiB\n";
+    if(opt.stats) {
+      std::ostringstream os;
+      os.precision(6);
+      os << "{\"input\": \"" << opt.input << "\", \"kernel\": \"" << opt.kernel << "\", \"streamed\": true, "
+         << "\"mesh_return_code\": \""
+         << (rc == AFM::MESH_COMPLETE ? "MESH_COMPLETE"
+             : rc == AFM::TIME_LIMIT_REACHED ? "TIME_LIMIT_REACHED"
+             : rc == AFM::ITERATION_LIMIT_REACHED ? "ITERATION_LIMIT_REACHED" : "STOPPED_AT_CHECKPOINT")
+         << "\", \"vertices\": " << st.number_of_vertices << ", \"triangles\": " << st.number_of_faces << ", ";
+      json_number(os, "mesh_time", t_meshing);
+      json_number(os, "total_time", seconds_since(t_start));
+      json_number(os, "peak_rss_bytes", peak_rss_bytes());
+      os << "\"statistics\": {\"front_edges_processed\": " << st.front_edges_processed
+         << ", \"points_inserted\": " << st.points_inserted << ", \"forced_closures\": " << st.forced_closures
+         << ", \"largest_front\": " << st.largest_front
+         << ", \"largest_triangles_in_memory\": " << st.largest_triangles_in_memory
+         << ", \"stream_sweeps\": " << st.stream_sweeps
+         << ", \"finished_triangles_broken\": " << st.finished_triangles_broken
+         << ", \"finished_triangles_reopened\": " << st.finished_triangles_reopened
+         << ", \"checkpoints_written\": " << st.checkpoints_written << "}}";
+      std::cout << os.str() << std::endl;
+    }
+    return 0;
+  }
   if(st.number_of_faces == 0) {
     throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
   }
@@ -338,6 +434,7 @@ int run(const Options& opt)
        << ", \"largest_active_vertices\": " << st.largest_active_vertices
        << ", \"memory_compactions\": " << st.memory_compactions
        << ", \"delaunay_repair_flips\": " << st.delaunay_repair_flips << "}, ";
+    json_number(os, "peak_rss_bytes", peak_rss_bytes());
     os << "\"quality\": {";
     json_number(os, "min_radius_ratio", q.min_radius_ratio);
     json_number(os, "mean_radius_ratio", q.mean_radius_ratio);
@@ -364,10 +461,29 @@ int run(const Options& opt)
   return 0;
 }
 
-Options parse(int argc, char* argv[])
+void parse_checkpoint(const std::vector<std::string>& checkpoint, Options& opt)
+{
+  long long every = 0;
+  std::size_t used = 0;
+  if(checkpoint.size() == 2) {
+    try {
+      every = std::stoll(checkpoint[0], &used);
+    } catch(const std::exception&) {
+      used = 0;
+    }
+  }
+  if(checkpoint.size() != 2 || used != checkpoint[0].size() || every < 1 || checkpoint[1].empty())
+    throw Usage_error("--checkpoint-every takes a positive number of triangles K and a FILE");
+  opt.checkpoint_every = std::size_t(every);
+  opt.checkpoint_file = checkpoint[1];
+  opt.stream = true;
+}
+
+Options parse(const std::vector<std::string>& args, bool resuming = false)
 {
   Options opt;
   long long smooth = 0, max_steps = 0;
+  std::vector<std::string> checkpoint;
   po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
                                   "Meshes the domain of a Triangle .poly file with the advancing-front\n"
                                   "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
@@ -399,6 +515,17 @@ Options parse(int argc, char* argv[])
      "mesh is valid but coarser there, and a note says so (the run ends without it too)")
     ("max-steps", po::value<long long>(&max_steps),
      "stop meshing after this many front edges, as --time-limit does")
+    ("stream", po::bool_switch(&opt.stream),
+     "write triangles to the outputs while meshing and drop them from memory, for meshes larger than "
+     "memory (not with .svg outputs, --smooth or --histogram; no quality figures)")
+    ("checkpoint-every", po::value<std::vector<std::string> >(&checkpoint)->multitoken(),
+     "K FILE: with --stream (implied), write the mesher's state to FILE after every K more triangles, "
+     "so that --resume FILE can finish an interrupted run")
+    ("stop-after-checkpoint", po::bool_switch(&opt.stop_after_checkpoint),
+     "stop right after the first checkpoint (to run a large mesh in several sessions)")
+    ("resume", po::value<std::string>(&opt.resume),
+     "FILE: continue the run whose checkpoint is FILE, with the options stored there; only "
+     "--checkpoint-every, --stop-after-checkpoint, --time-limit, --max-steps, --stats and --report may be given")
     ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout")
     ("report", po::bool_switch(&opt.report),
      "print a readable quality summary (on stdout; on stderr with --stats)");
@@ -410,7 +537,7 @@ Options parse(int argc, char* argv[])
   pos.add("input", 1);
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(pos).run(), vm);
+    po::store(po::command_line_parser(args).options(all).positional(pos).run(), vm);
     po::notify(vm);
   } catch(const po::error& e) {
     throw Usage_error(e.what());
@@ -418,6 +545,47 @@ Options parse(int argc, char* argv[])
   if(vm.count("help")) {
     std::cout << visible << "\nExit codes: 0 success, 1 invalid input, 2 bad usage, 3 internal error.\n";
     std::exit(EXIT_SUCCESS);
+  }
+  if(!opt.resume.empty()) {
+    if(resuming) throw Usage_error("the checkpoint's stored options hold --resume");
+    for(const auto& o : vm)
+      if(!o.second.defaulted() && o.first != "resume" && o.first != "checkpoint-every" &&
+         o.first != "stop-after-checkpoint" && o.first != "time-limit" && o.first != "max-steps" &&
+         o.first != "stats" && o.first != "report")
+        throw Usage_error("--resume takes the run's options from the checkpoint; --" + o.first + " cannot be given");
+    // the interrupted run's own options, then what this command line adds
+    std::string stored;
+    try {
+      typedef Types<CGAL::Exact_predicates_inexact_constructions_kernel>::CDT CDT;
+      stored = CGAL::Advancing_front_mesher_2<CDT>::read_checkpoint_info(opt.resume).user_data;
+    } catch(const std::exception& e) {
+      throw Input_error(e.what());
+    }
+    std::vector<std::string> stored_args;
+    for(std::size_t b = 0; b < stored.size();) {
+      const std::size_t e = stored.find('\0', b);
+      stored_args.push_back(stored.substr(b, e == std::string::npos ? std::string::npos : e - b));
+      b = (e == std::string::npos) ? stored.size() : e + 1;
+    }
+    Options resumed;
+    try {
+      resumed = parse(stored_args, true);
+    } catch(const Usage_error& e) {
+      throw Input_error(opt.resume + ": the stored options are not valid: " + e.what());
+    }
+    resumed.resume = opt.resume;
+    resumed.stats = opt.stats;
+    resumed.report = opt.report;
+    resumed.stop_after_checkpoint = opt.stop_after_checkpoint;
+    if(vm.count("time-limit")) resumed.time_limit = opt.time_limit;
+    if(vm.count("max-steps")) resumed.max_steps = std::size_t(max_steps);
+    if(!checkpoint.empty()) parse_checkpoint(checkpoint, resumed);
+    if(resumed.stop_after_checkpoint && resumed.checkpoint_every == 0)
+      throw Usage_error("--stop-after-checkpoint needs --checkpoint-every (given now or in the interrupted run)");
+    if(vm.count("time-limit") && (!(opt.time_limit > 0) || !std::isfinite(opt.time_limit)))
+      throw Usage_error("--time-limit must be a positive number of seconds");
+    if(vm.count("max-steps") && max_steps < 1) throw Usage_error("--max-steps must be a positive count");
+    return resumed;
   }
   if(opt.input.empty()) throw Usage_error("no input file given");
   opt.has_size = vm.count("size") > 0;
@@ -454,6 +622,21 @@ Options parse(int argc, char* argv[])
     if(ext != ".off" && ext != ".vtu" && ext != ".node" && ext != ".ele" && ext != ".msh" && ext != ".svg")
       throw Usage_error("unknown output format '" + out + "' (use .off, .vtu, .node, .ele, .msh or .svg)");
   }
+  if(!checkpoint.empty()) parse_checkpoint(checkpoint, opt);
+  if(opt.stop_after_checkpoint && opt.checkpoint_every == 0)
+    throw Usage_error("--stop-after-checkpoint needs --checkpoint-every");
+  if(opt.stream) {
+    if(opt.outputs.empty()) throw Usage_error("--stream needs an output (-o)");
+    for(const std::string& out : opt.outputs)
+      if(out.size() >= 4 && out.compare(out.size() - 4, 4, ".svg") == 0)
+        throw Usage_error("--stream cannot write pictures (.svg): they need the whole mesh");
+    if(opt.smooth > 0) throw Usage_error("--stream cannot be combined with --smooth (smoothing needs the whole mesh)");
+    if(!opt.histogram.empty()) throw Usage_error("--stream cannot be combined with --histogram");
+  }
+  for(const std::string& a : args) {
+    if(!opt.arguments.empty()) opt.arguments += '\0';
+    opt.arguments += a;
+  }
   return opt;
 }
 
@@ -463,10 +646,13 @@ int main(int argc, char* argv[])
 {
   Options opt;
   try {
-    opt = parse(argc, argv);
+    opt = parse(std::vector<std::string>(argv + 1, argv + argc));
   } catch(const Usage_error& e) {
     std::cerr << program << ": " << e.what() << "\n" << "Try 'afmesh_2 --help'.\n";
     return 2;
+  } catch(const Input_error& e) {
+    std::cerr << program << ": error: " << e.what() << "\n";
+    return 1;
   }
   try {
     if(opt.kernel == "epeck") return run<CGAL::Exact_predicates_exact_constructions_kernel>(opt);

@@ -14,8 +14,10 @@
 
 #include <CGAL/Advancing_front_mesh_2/Default_visitor.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_return_code.h>
+#include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/Sizing_fields.h>
 #include <CGAL/Advancing_front_mesh_2/Statistics.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
@@ -34,13 +36,18 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <list>
 #include <queue>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <typeinfo>
 #include <type_traits>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -99,6 +106,7 @@ public:
   typedef typename CDT::Triangulation_data_structure Tds;
   typedef std::list<Point> Seeds;
   typedef typename Seeds::const_iterator Seeds_const_iterator;
+  typedef Advancing_front_mesh_2::Mesh_sink_2<Point> Mesh_sink;
 
 private:
   typedef std::uint32_t Vid;
@@ -250,6 +258,165 @@ public:
 
   /// @}
 
+  /// \name Streaming
+  /// @{
+
+  /*!
+  Switches on streaming mode: finished triangles, those whose circumcircles
+  lie so far behind the front that no later point is expected to break
+  them, are handed to `sink` (with the mesher's own vertex numbering, see
+  `Advancing_front_mesh_2::Mesh_sink_2`) and removed from the triangulation
+  as meshing goes, so that memory holds only the triangles near the front
+  (Mavriplis 1992, section 4). The visitor's `on_face_finished()` sees each
+  of them first. At the end every triangle has gone to the sink and `cdt` is
+  left empty (`clear()`ed): the mesh is wherever the sink put it.
+  Statistics count the finished triangles that a later point would after
+  all have changed (`finished_triangles_broken`,
+  `finished_triangles_reopened`): with them at 0, which every test and
+  benchmark measured, the triangles are exactly those of the same run
+  without streaming.
+
+  Must be called before meshing starts; `nullptr` switches streaming off.
+  The sink must outlive the meshing.
+  */
+  void set_output_sink(Mesh_sink* sink)
+  {
+    sink_ = sink;
+    initialized_ = false;
+  }
+  Mesh_sink* output_sink() const { return sink_; }
+
+  /// In streaming mode, the triangles in memory are searched for finished
+  /// ones after `n` new triangles (default 4096), or after as many as
+  /// stayed in memory at the previous search if that is more: smaller
+  /// values hold fewer triangles in memory and search more often.
+  void set_sweep_interval(std::size_t n) { minimum_sweep_ = (std::max)(n, std::size_t(1)); }
+
+  /*!
+  Streaming mode only: writes a checkpoint to `file_name` each time at least
+  `every` more triangles have gone to the sink (0 switches checkpoints off),
+  the restart facility of Mavriplis (1992, section 4). A checkpoint holds the
+  state of the mesher (the front, the triangles still in memory, the trees,
+  the queue) and `sink->checkpoint_state()`, so that `resume()` in a later
+  run goes on exactly where this one was: the final mesh and output are
+  those of an uninterrupted run. It is written to `file_name.tmp` and
+  renamed, so a run killed while writing leaves the previous checkpoint.
+  `user_data` is stored with it (the command-line tool stores its options).
+  With `stop == true`, `refine_mesh()` returns `STOPPED_AT_CHECKPOINT` after
+  the first checkpoint.
+
+  The checkpoint file is in the machine's native binary layout, for the same
+  kernel and build; it holds coordinates as doubles, so the points must be
+  representable as doubles (always true for `Epick`, and for the other
+  kernels when the input was given in doubles).
+  */
+  void set_checkpoint(std::size_t every, const std::string& file_name, const std::string& user_data = std::string(),
+                      bool stop = false)
+  {
+    checkpoint_every_ = every;
+    checkpoint_file_ = file_name;
+    checkpoint_user_data_ = user_data;
+    checkpoint_stop_ = stop;
+    next_checkpoint_ = triangles_output_ + every;
+  }
+
+  /// What `read_checkpoint_info()` and `resume()` return.
+  struct Checkpoint_info
+  {
+    std::string user_data;     ///< as given to `set_checkpoint()`
+    std::string sink_state;    ///< what the sink's `checkpoint_state()` returned
+    std::size_t vertices_written = 0, triangles_written = 0; ///< given to the sink before the checkpoint
+  };
+
+  /*!
+  Reads the beginning of a checkpoint written by `set_checkpoint()`: what a
+  program needs to prepare a resumed run (its options in `user_data`, a sink
+  made from `sink_state`).
+
+  The kernel is not checked here (`resume()` does), so that a program can
+  read the kernel it must use from its `user_data`.
+
+  \throws std::runtime_error "FILE: ..." if the file cannot be read or is
+  not a checkpoint of this mesher.
+  */
+  static Checkpoint_info read_checkpoint_info(const std::string& file_name)
+  {
+    std::ifstream is(file_name.c_str(), std::ios::in | std::ios::binary);
+    if(!is) throw std::runtime_error(file_name + ": cannot read the checkpoint");
+    Advancing_front_mesh_2::internal::Binary_reader r(is, file_name);
+    return read_checkpoint_header(r, false);
+  }
+
+  /*!
+  Continues the run whose checkpoint is `file_name`. The triangulation must
+  be empty and the output sink already set (made from the `sink_state` of
+  `read_checkpoint_info()`: for `Streaming_mesh_writer`, with its `resume()`),
+  and the sizing field must be the one of the interrupted run. Then
+  `refine_mesh()` (or `step_by_step_refine_mesh()`) meshes the rest; the
+  triangles and vertices the sink receives, their numbers and their order
+  are exactly those the interrupted run would have given after its
+  checkpoint. Limits and checkpoints are not restored: set them again.
+
+  \throws std::logic_error if the triangulation is not empty or no sink is set
+  \throws std::runtime_error "FILE: ..." if the file cannot be read, is
+  corrupt (its checksum is checked) or was written with another kernel.
+  */
+  Checkpoint_info resume(const std::string& file_name)
+  {
+    if(sink_ == nullptr)
+      throw std::logic_error("Advancing_front_mesher_2::resume(): set the output sink first");
+    if(cdt_.number_of_vertices() != 0 || cdt_.dimension() != -1)
+      throw std::logic_error("Advancing_front_mesher_2::resume(): the triangulation must be empty");
+    std::ifstream is(file_name.c_str(), std::ios::in | std::ios::binary);
+    if(!is) throw std::runtime_error(file_name + ": cannot read the checkpoint");
+    Advancing_front_mesh_2::internal::Binary_reader r(is, file_name);
+    clear_state();
+    try {
+      const Checkpoint_info info = read_checkpoint_header(r);
+      vertices_output_ = info.vertices_written;
+      triangles_output_ = info.triangles_written;
+      read_checkpoint_state(r);
+      r.check_checksum();
+      initialized_ = true;
+      finished_ = false;
+      return info;
+    } catch(...) {
+      // nothing half-loaded may stay behind
+      clear_state();
+      cdt_.clear();
+      initialized_ = false;
+      throw;
+    }
+  }
+
+  /// Writes a checkpoint now (streaming mode, between steps); see `set_checkpoint()`.
+  void write_checkpoint(const std::string& file_name, const std::string& user_data = std::string())
+  {
+    if(sink_ == nullptr) throw std::logic_error("Advancing_front_mesher_2: checkpoints need streaming mode");
+    if(!initialized_) init();
+    const std::string sink_state = sink_->checkpoint_state();
+    const std::string tmp = file_name + ".tmp";
+    // counted in the state it writes: a resumed run counts on from there
+    ++stats_.checkpoints_written;
+    try {
+      std::ofstream os(tmp.c_str(), std::ios::out | std::ios::binary | std::ios::trunc);
+      if(!os) throw std::runtime_error("cannot write " + tmp);
+      Advancing_front_mesh_2::internal::Binary_writer w(os);
+      write_checkpoint_state(w, user_data, sink_state);
+      w.write_checksum();
+      os.flush();
+      if(!os) throw std::runtime_error("cannot write " + tmp);
+      os.close();
+      if(std::rename(tmp.c_str(), file_name.c_str()) != 0)
+        throw std::runtime_error("cannot rename " + tmp + " to " + file_name);
+    } catch(...) {
+      --stats_.checkpoints_written;
+      throw;
+    }
+  }
+
+  /// @}
+
   /// \name Meshing
   /// @{
 
@@ -290,6 +457,17 @@ public:
         throw;
       }
       ++steps;
+      if(stop_now_) {
+        stop_now_ = false;
+        rc = Advancing_front_mesh_2::STOPPED_AT_CHECKPOINT;
+        break;
+      }
+    }
+    if(rc == Advancing_front_mesh_2::STOPPED_AT_CHECKPOINT) {
+      enter_phase(FRONT_SELECTION);
+      store_phase_times();
+      stats_.meshing_time += seconds_since(start);
+      return rc;
     }
     if(rc != Advancing_front_mesh_2::MESH_COMPLETE) close_remaining_front();
     finish();
@@ -318,6 +496,12 @@ public:
       cdt_, seeds_.begin(), seeds_.end(), seeds_mark_);
     exponent_ = choose_exponent();
     build_front();
+    if(sink_ != nullptr) {
+      // the face that stands for faces gone to the sink: not in the domain,
+      // so cavities stop at it as at the outside
+      ghost_ = tds().create_face();
+      ghost_->set_in_domain(false);
+    }
     step_edges_.clear(); // only the edges of one step are of interest
     visitor_.on_init(*this);
     stats_.init_time += seconds_since(start);
@@ -394,7 +578,7 @@ public:
         if(it == nullptr) return false;
         if(std::find(in_[w].begin(), in_[w].end(), v) == in_[w].end()) return false;
         const Front_edge& fe = *it;
-        if(fe.behind != Face_handle()) {
+        if(fe.behind != Face_handle() && fe.behind != ghost_) {
           const int i = fe.behind_index;
           if(fe.behind->vertex(cw(i)) != vertex_[v] || fe.behind->vertex(ccw(i)) != vertex_[w])
             return false;
@@ -541,6 +725,15 @@ private:
     phase_start_ = Clock::now();
     meshed_area_ = 0;
     domain_area_ = 0;
+    ghost_ = Face_handle();
+    ghost_apex_.clear();
+    live_faces_.clear();
+    output_id_.clear();
+    vertices_output_ = 0;
+    triangles_output_ = 0;
+    triangles_in_memory_ = 0;
+    created_since_sweep_ = 0;
+    sweep_after_ = minimum_sweep_;
   }
 
   // ------------------------------------------------------ vertex records
@@ -908,6 +1101,13 @@ private:
     Phase_scope phase(this, FRONT_UPDATE);
     Face_handle f = tds().create_face(vertex_[a], vertex_[b], vertex_[c]);
     f->set_in_domain(true);
+    ++triangles_in_memory_;
+    stats_.largest_triangles_in_memory = (std::max)(stats_.largest_triangles_in_memory, triangles_in_memory_);
+    if(sink_ != nullptr) {
+      ++created_since_sweep_;
+      for(Vid v : {a, b, c})
+        if(std::uint32_t* n = live_faces_.find(&*vertex_[v])) ++*n;
+    }
     const std::array<Vid, 3> vs = {{a, b, c}};
     // The triangle splits or joins loops of the front when it meets the
     // front in more than one piece: the pieces are its front edges, joined
@@ -924,7 +1124,7 @@ private:
         f->set_constraint(k, fe.constrained);
         if(fe.behind != Face_handle()) {
           f->set_neighbor(k, fe.behind);
-          fe.behind->set_neighbor(fe.behind_index, f);
+          if(fe.behind != ghost_) fe.behind->set_neighbor(fe.behind_index, f);
         } else {
           f->set_neighbor(k, Face_handle());
           // a virgin side of a constraint: the other side now faces f
@@ -969,6 +1169,10 @@ private:
     visitor_.on_face_removed(f);
     std::array<Vid, 3> vs;
     for(int k = 0; k < 3; ++k) vs[k] = acquire(f->vertex(k));
+    --triangles_in_memory_;
+    if(sink_ != nullptr)
+      for(int k = 0; k < 3; ++k)
+        if(std::uint32_t* n = live_faces_.find(&*f->vertex(k))) --*n;
     for(int k = 0; k < 3; ++k) {
       const Vid s = vs[ccw(k)], t = vs[cw(k)];
       Face_handle g = f->neighbor(k);
@@ -986,6 +1190,12 @@ private:
         } else {
           remove_front_edge(t, s);
         }
+      } else if(sink_ != nullptr && g == ghost_) {
+        // beyond lies a finished triangle (or, after a restart, the outside)
+        if(ghost_apex_.count(std::make_pair(&*f->vertex(ccw(k)), &*f->vertex(cw(k)))) != 0)
+          reopened_edges_.push_back(key(s, t));
+        add_front_edge(s, t, ghost_, -1, constrained);
+        if(created) created->push_back(key(s, t));
       } else {
         const int j = g->index(f);
         g->set_neighbor(j, Face_handle());
@@ -1408,6 +1618,19 @@ private:
   {
     recycle_released_ids();
     release_unused_memory();
+    if(sink_ != nullptr && created_since_sweep_ >= sweep_after_) {
+      sweep_finished_faces(false);
+      // right after a sweep the state is smallest
+      if(checkpoint_every_ != 0 && triangles_output_ >= next_checkpoint_) {
+        write_checkpoint(checkpoint_file_, checkpoint_user_data_);
+        next_checkpoint_ = triangles_output_ + checkpoint_every_;
+        if(checkpoint_stop_) {
+          // before the next edge: the state in memory is the checkpoint's
+          stop_now_ = true;
+          return true;
+        }
+      }
+    }
     while(!queue_.empty()) {
       const Queue_entry e = queue_.top();
       queue_.pop();
@@ -1623,6 +1846,10 @@ private:
       for(int k = 0; k < 3; ++k) {
         if(f->is_constrained(k)) continue;
         Face_handle g = f->neighbor(k);
+        if(sink_ != nullptr && g == ghost_) {
+          count_broken_finished_face(f, k, p);
+          continue;
+        }
         if(g == Face_handle() || !g->is_in_domain() || broken_set_.count(g)) continue;
         ++stats_.incircle_tests;
         if(pred_.strictly_inside_circle(g->vertex(0)->point(), g->vertex(1)->point(),
@@ -1641,6 +1868,7 @@ private:
     // step 9: remove them, remembering them to restore them if p is rejected
     removed_.clear();
     cavity_edges_.clear();
+    reopened_edges_.clear();
     for(Face_handle f : broken_) {
       removed_.push_back({{acquire(f->vertex(0)), acquire(f->vertex(1)), acquire(f->vertex(2))}});
       remove_triangle(f, &cavity_edges_);
@@ -1673,6 +1901,9 @@ private:
     Vertex_handle vh = tds().create_vertex();
     vh->set_point(p);
     const Vid pid = acquire(vh);
+    // the vertices the mesher creates are removed once their last triangle
+    // has gone to the sink; the input's stay (constraints refer to them)
+    if(sink_ != nullptr) live_faces_.insert(&*vh, 0);
     ++stats_.points_inserted;
     visitor_.on_point_inserted(vh);
 
@@ -1726,6 +1957,14 @@ private:
       ++stats_.triangles_around_new_points;
       for(Edge_key e : created)
         if(source(e) == pid || target(e) == pid) work_.push_back(e);
+    }
+    // An edge of a finished triangle that the cavity exposed and the
+    // triangles about p did not cover again stays on the front: the
+    // triangle would have been a front triangle again, which the mesher
+    // without streaming could break later.
+    for(Edge_key k : reopened_edges_) {
+      const Front_edge* fe = front_.find(k);
+      if(fe != nullptr && fe->behind == ghost_) ++stats_.finished_triangles_reopened;
     }
     return true;
   }
@@ -1798,9 +2037,495 @@ private:
     if(finished_) return;
     {
       Phase_scope phase(this, OUTPUT);
-      finish_triangulation();
+      if(sink_ != nullptr) finish_stream();
+      else finish_triangulation();
     }
     store_phase_times();
+  }
+
+  // ---------------------------------------------------------- streaming
+  // A triangle can only be broken by a point inside its circle, and points
+  // are only placed in the unmeshed region; the region grows back only by
+  // the cavities of new points, which lie at the front. A triangle whose
+  // circle, enlarged by `finished_margin`, meets no front edge and holds no
+  // free point, and whose neighbours' circles are as clear, is taken for
+  // finished (see sweep_finished_faces()). The margin covers the cavities
+  // that open the mesh a little behind the front; whether it did is checked
+  // as the run goes on (count_broken_finished_face(), and the reopened
+  // edges in insert_point()).
+  static constexpr double finished_margin = 2.0;
+
+  // Is any front edge or active vertex within `radius` of (cx, cy)?
+  bool front_meets_disk(double cx, double cy, double radius) const
+  {
+    bool meets = false;
+    const double pad = 1e-9 * radius + 1e-12 * (std::abs(cx) + std::abs(cy));
+    index_.query_with_reach(cx, cy, radius, [&](std::size_t id, double px, double py, bool in_disk) {
+      if(meets) return;
+      if(in_disk) {
+        meets = true;
+        return;
+      }
+      for(Vid h : out_[Vid(id)])
+        if(!(segment_distance(cx, cy, px, py, x(h), y(h)) > radius + pad)) {
+          meets = true;
+          return;
+        }
+    });
+    return meets;
+  }
+
+  bool is_clear_of_front(Face_handle f) const
+  {
+    if(face_records_.find(&*f) != nullptr) return false; // a front triangle
+    const Circle c = circle_of(f);
+    if(!(std::isfinite(c.cx) && std::isfinite(c.cy) && std::isfinite(c.r))) return false;
+    return !front_meets_disk(c.cx, c.cy, finished_margin * c.r);
+  }
+
+  // A cavity's walk reached finished face beyond edge k of f: had that face
+  // been kept, was it broken by p?
+  void count_broken_finished_face(Face_handle f, int k, const Point& p)
+  {
+    const Vertex_handle s = f->vertex(ccw(k)), t = f->vertex(cw(k));
+    const auto it = ghost_apex_.find(std::make_pair(&*s, &*t));
+    if(it == ghost_apex_.end()) return; // the outside, after a restart
+    ++stats_.incircle_tests;
+    if(pred_.strictly_inside_circle(t->point(), s->point(), it->second, p)) ++stats_.finished_triangles_broken;
+  }
+
+  std::size_t output_vertex(Vertex_handle v)
+  {
+    if(const std::uint64_t* id = output_id_.find(&*v)) return std::size_t(*id);
+    const std::size_t id = vertices_output_++;
+    output_id_.insert(&*v, id);
+    sink_->add_vertex(id, v->point());
+    return id;
+  }
+
+  // Hands the finished faces to the sink, in an order that depends only on
+  // their coordinates (not on addresses), and removes them and the vertices
+  // left without triangles.
+  void drop_finished_faces(std::vector<Face_handle>& faces)
+  {
+    struct Keyed
+    {
+      std::array<double, 6> key;
+      Face_handle face;
+      int first;
+    };
+    std::vector<Keyed> keyed;
+    keyed.reserve(faces.size());
+    for(Face_handle f : faces) {
+      // rotated to start at the lexicographically smallest vertex
+      int first = 0;
+      for(int i = 1; i < 3; ++i) {
+        const Point& p = f->vertex(i)->point();
+        const Point& q = f->vertex(first)->point();
+        if(ix(p) < ix(q) || (ix(p) == ix(q) && iy(p) < iy(q))) first = i;
+      }
+      Keyed k;
+      k.face = f;
+      k.first = first;
+      for(int i = 0; i < 3; ++i) {
+        k.key[2 * i] = ix(f->vertex((first + i) % 3)->point());
+        k.key[2 * i + 1] = iy(f->vertex((first + i) % 3)->point());
+      }
+      keyed.push_back(k);
+    }
+    std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
+    // marked out of the domain: the faces of the batch then tell themselves
+    // apart from the faces that stay
+    for(Face_handle f : faces) f->set_in_domain(false);
+    for(const Keyed& k : keyed) {
+      visitor_.on_face_finished(k.face);
+      std::array<std::size_t, 3> ids;
+      for(int i = 0; i < 3; ++i) ids[i] = output_vertex(k.face->vertex((k.first + i) % 3));
+      sink_->add_triangle(ids[0], ids[1], ids[2]);
+      ++triangles_output_;
+    }
+    for(Face_handle f : faces) {
+      for(int k = 0; k < 3; ++k) {
+        Face_handle g = f->neighbor(k);
+        if(g == ghost_) {
+          ghost_apex_.erase(std::make_pair(&*f->vertex(ccw(k)), &*f->vertex(cw(k))));
+        } else if(g != Face_handle() && g->is_in_domain()) {
+          // a face that stays: its edge now faces a finished triangle, whose
+          // apex is kept to tell whether a cavity would have broken it
+          const int j = g->index(f);
+          g->set_neighbor(j, ghost_);
+          ghost_apex_[std::make_pair(&*g->vertex(ccw(j)), &*g->vertex(cw(j)))] = f->vertex(k)->point();
+        }
+      }
+      std::array<Vertex_handle, 3> vs = {{f->vertex(0), f->vertex(1), f->vertex(2)}};
+      tds().delete_face(f);
+      --triangles_in_memory_;
+      for(Vertex_handle v : vs) {
+        std::uint32_t* n = live_faces_.find(&*v);
+        if(n == nullptr || --*n != 0 || vid_.find(&*v) != nullptr) continue;
+        live_faces_.erase(&*v);
+        output_id_.erase(&*v);
+        tds().delete_vertex(v);
+      }
+    }
+    live_faces_.shrink_if_sparse();
+    output_id_.shrink_if_sparse();
+  }
+
+  void sweep_finished_faces(bool everything)
+  {
+    Phase_scope phase(this, OUTPUT);
+    ++stats_.stream_sweeps;
+    std::vector<Face_handle> kept, finished;
+    near_front_.clear();
+    // the container itself: faces_begin() is empty below dimension 2, which a
+    // resumed run's triangulation keeps
+    for(auto f = tds().faces().begin(); f != tds().faces().end(); ++f) {
+      Face_handle fh = f;
+      if(fh == ghost_ || !fh->is_in_domain()) continue;
+      kept.push_back(fh);
+      if(!everything && !is_clear_of_front(fh)) near_front_.insert(&*fh, true);
+    }
+    // A triangle goes only when its neighbours are clear of the front too:
+    // a cavity can only open a triangle next to one whose circle a new point
+    // breaks, and a neighbour with a large circle (a closure that the size
+    // bound could not prevent) reaches far ahead.
+    for(Face_handle f : kept) {
+      bool done = near_front_.find(&*f) == nullptr;
+      for(int k = 0; done && k < 3; ++k) {
+        Face_handle g = f->neighbor(k);
+        if(g != Face_handle() && g != ghost_ && g->is_in_domain() && near_front_.find(&*g) != nullptr) done = false;
+      }
+      if(done) finished.push_back(f);
+    }
+    near_front_.clear();
+    near_front_.shrink_if_sparse();
+    drop_finished_faces(finished);
+    created_since_sweep_ = 0;
+    // after as many new triangles as stayed in memory, so that each is tested
+    // a bounded number of times on average
+    sweep_after_ = (std::max)(triangles_in_memory_, minimum_sweep_);
+  }
+
+  // --------------------------------------------------------- checkpoints
+  // The state is written as it is in memory, trees included (their query
+  // order decides ties), so that a resumed run repeats the decisions of an
+  // uninterrupted one exactly. Handles become indices: vertices and faces
+  // are numbered in the file.
+  static constexpr std::uint32_t checkpoint_version = 1;
+  static constexpr std::uint32_t null_face = 0xffffffffu, ghost_face = 0xfffffffeu, no_index = 0xffffffffu;
+
+  typedef Advancing_front_mesh_2::internal::Binary_writer Binary_writer;
+  typedef Advancing_front_mesh_2::internal::Binary_reader Binary_reader;
+
+  static std::string checkpoint_magic() { return "Advancing_front_mesh_2 checkpoint"; }
+  static std::string traits_name() { return typeid(Geom_traits).name(); }
+
+  static Checkpoint_info read_checkpoint_header(Binary_reader& r, bool check_traits = true)
+  {
+    if(r.read_string(64) != checkpoint_magic()) r.fail("not a checkpoint of Advancing_front_mesher_2");
+    if(r.read<std::uint32_t>() != checkpoint_version) r.fail("a checkpoint of another version of the mesher");
+    if(r.read_string(4096) != traits_name() && check_traits) r.fail("a checkpoint written with another kernel");
+    Checkpoint_info info;
+    info.user_data = r.read_string(std::uint64_t(1) << 24);
+    info.sink_state = r.read_string(std::uint64_t(1) << 24);
+    info.vertices_written = std::size_t(r.read<std::uint64_t>());
+    info.triangles_written = std::size_t(r.read<std::uint64_t>());
+    return info;
+  }
+
+  static double exact_double(const FT& v)
+  {
+    const double d = CGAL::to_double(v);
+    if(!(FT(d) == v))
+      throw std::logic_error("Advancing_front_mesher_2: a checkpoint needs coordinates that are doubles");
+    return d;
+  }
+
+  void write_checkpoint_state(Binary_writer& w, const std::string& user_data, const std::string& sink_state)
+  {
+    w.write_string(checkpoint_magic());
+    w.write(checkpoint_version);
+    w.write_string(traits_name());
+    w.write_string(user_data);
+    w.write_string(sink_state);
+    w.write(std::uint64_t(vertices_output_));
+    w.write(std::uint64_t(triangles_output_));
+
+    // the vertices anything refers to, and the faces in memory
+    std::unordered_map<const Tds_vertex*, std::uint32_t> vindex;
+    std::vector<Vertex_handle> vertices;
+    auto number = [&](Vertex_handle v) {
+      if(vindex.emplace(&*v, std::uint32_t(vertices.size())).second) vertices.push_back(v);
+    };
+    std::vector<bool> is_free(vertex_.size(), false);
+    for(Vid v : free_ids_) is_free[v] = true;
+    for(Vid v : released_ids_) is_free[v] = true;
+    for(Vid v = 0; v < vertex_.size(); ++v)
+      if(!is_free[v]) number(vertex_[v]);
+    std::unordered_map<const Tds_face*, std::uint32_t> findex;
+    std::vector<Face_handle> faces;
+    for(auto f = tds().faces().begin(); f != tds().faces().end(); ++f) {
+      Face_handle fh = f;
+      if(fh == ghost_ || !fh->is_in_domain()) continue;
+      findex.emplace(&*fh, std::uint32_t(faces.size()));
+      faces.push_back(fh);
+      for(int i = 0; i < 3; ++i) number(fh->vertex(i));
+    }
+    constraint_octree_.for_each_payload([&](const Constraint& c) {
+      number(c.first);
+      number(c.second);
+    });
+    auto face_code = [&](Face_handle f) -> std::uint32_t {
+      if(f == Face_handle()) return null_face;
+      const auto it = findex.find(&*f);
+      // the ghost, or a face outside the domain: after a restart both are
+      // the ghost, which the mesher treats alike
+      return it == findex.end() ? ghost_face : it->second;
+    };
+    auto vertex_code = [&](Vertex_handle v) { return vindex.at(&*v); };
+
+    w.write(exponent_);
+    w.write(domain_area_);
+    w.write(meshed_area_);
+    w.write(version_counter_);
+    w.write(std::uint64_t(queue_compactions_));
+    w.write(static_cast<std::uint8_t>(pocket_priority_));
+    w.write(stats_);
+    for(std::size_t n : {triangles_in_memory_, created_since_sweep_, sweep_after_, minimum_sweep_})
+      w.write(std::uint64_t(n));
+
+    w.write(std::uint64_t(vertices.size()));
+    for(Vertex_handle v : vertices) {
+      w.write(exact_double(v->point().x()));
+      w.write(exact_double(v->point().y()));
+      const std::uint64_t* out = output_id_.find(&*v);
+      w.write(out != nullptr ? *out : ~std::uint64_t(0));
+      w.write(static_cast<std::uint8_t>(live_faces_.find(&*v) != nullptr));
+    }
+
+    w.write(std::uint64_t(vertex_.size()));
+    for(Vid v = 0; v < vertex_.size(); ++v) {
+      w.write(is_free[v] ? no_index : vertex_code(vertex_[v]));
+      w.write(xy_[v]);
+      w.write_vector(std::vector<Vid>(out_[v].begin(), out_[v].end()));
+      w.write_vector(std::vector<Vid>(in_[v].begin(), in_[v].end()));
+    }
+    w.write_vector(free_ids_);
+    w.write_vector(released_ids_);
+
+    w.write(std::uint64_t(faces.size()));
+    for(Face_handle f : faces) {
+      for(int i = 0; i < 3; ++i) w.write(vertex_code(f->vertex(i)));
+      for(int i = 0; i < 3; ++i) w.write(face_code(f->neighbor(i)));
+      for(int i = 0; i < 3; ++i) w.write(static_cast<std::uint8_t>(f->is_constrained(i)));
+      const Face_record* rec = face_records_.find(&*f);
+      w.write(static_cast<std::uint8_t>(rec != nullptr));
+      if(rec != nullptr) {
+        w.write(std::uint64_t(rec->circle_item));
+        w.write(rec->front_edges);
+      }
+    }
+
+    w.write(std::uint64_t(front_.size()));
+    front_.for_each([&](Edge_key k, const Front_edge& fe) {
+      w.write(k);
+      w.write(face_code(fe.behind));
+      w.write(fe.behind_index);
+      w.write(static_cast<std::uint8_t>(fe.constrained));
+      w.write(fe.level);
+      w.write(fe.version);
+    });
+
+    std::priority_queue<Queue_entry> q = queue_;
+    w.write(std::uint64_t(q.size()));
+    for(; !q.empty(); q.pop()) {
+      const Queue_entry& e = q.top();
+      w.write(e.length);
+      w.write(e.key);
+      w.write(e.version);
+      w.write(e.level);
+    }
+
+    index_.save(w);
+    triangle_octree_.save(w, [&](Binary_writer& bw, const Face_handle& f) { bw.write(face_code(f)); });
+    constraint_octree_.save(w, [&](Binary_writer& bw, const Constraint& c) {
+      bw.write(vertex_code(c.first));
+      bw.write(vertex_code(c.second));
+    });
+
+    w.write(std::uint64_t(ghost_apex_.size()));
+    for(const auto& g : ghost_apex_) {
+      w.write(vindex.at(g.first.first));
+      w.write(vindex.at(g.first.second));
+      w.write(exact_double(g.second.x()));
+      w.write(exact_double(g.second.y()));
+    }
+  }
+
+  void read_checkpoint_state(Binary_reader& r)
+  {
+    const std::uint64_t big = std::uint64_t(1) << 40;
+    auto check = [&r](bool ok, const char* what) {
+      if(!ok) r.fail(std::string("corrupt checkpoint: ") + what);
+    };
+    exponent_ = r.read<int>();
+    domain_area_ = r.read<double>();
+    meshed_area_ = r.read<double>();
+    version_counter_ = r.read<std::uint32_t>();
+    queue_compactions_ = std::size_t(r.read<std::uint64_t>());
+    pocket_priority_ = r.read<std::uint8_t>() != 0;
+    stats_ = r.read<Advancing_front_mesh_2::Statistics>();
+    triangles_in_memory_ = std::size_t(r.read<std::uint64_t>());
+    created_since_sweep_ = std::size_t(r.read<std::uint64_t>());
+    sweep_after_ = std::size_t(r.read<std::uint64_t>());
+    minimum_sweep_ = std::size_t(r.read<std::uint64_t>());
+
+    const std::uint64_t nv = r.read<std::uint64_t>();
+    check(nv < big, "vertex count");
+    std::vector<Vertex_handle> vertices;
+    vertices.reserve(std::size_t((std::min)(nv, std::uint64_t(1) << 20)));
+    for(std::uint64_t i = 0; i < nv; ++i) {
+      const double px = r.read<double>(), py = r.read<double>();
+      const std::uint64_t out = r.read<std::uint64_t>();
+      const bool created = r.read<std::uint8_t>() != 0;
+      Vertex_handle v = tds().create_vertex();
+      v->set_point(Point(px, py));
+      vertices.push_back(v);
+      if(out != ~std::uint64_t(0)) output_id_.insert(&*v, out);
+      if(created) live_faces_.insert(&*v, 0);
+    }
+    auto vertex_at = [&](std::uint32_t i) {
+      check(i < vertices.size(), "vertex index");
+      return vertices[i];
+    };
+
+    const std::uint64_t nids = r.read<std::uint64_t>();
+    check(nids < no_vertex, "number of vertex ids");
+    std::vector<bool> is_free(std::size_t(nids), true);
+    for(std::uint64_t v = 0; v < nids; ++v) {
+      const std::uint32_t code = r.read<std::uint32_t>();
+      vertex_.push_back(code == no_index ? Vertex_handle() : vertex_at(code));
+      xy_.push_back(r.read<std::array<double, 2> >());
+      std::vector<Vid> ids;
+      out_.emplace_back();
+      in_.emplace_back();
+      r.read_vector(ids, nids);
+      for(Vid w : ids) { check(w < nids, "front edge"); out_.back().push_back(w); }
+      r.read_vector(ids, nids);
+      for(Vid w : ids) { check(w < nids, "front edge"); in_.back().push_back(w); }
+      if(code != no_index) {
+        check(vid_.find(&*vertex_.back()) == nullptr, "vertex ids");
+        is_free[std::size_t(v)] = false;
+        vid_.insert(&*vertex_.back(), Vid(v));
+      }
+    }
+    r.read_vector(free_ids_, nids);
+    r.read_vector(released_ids_, nids);
+    for(Vid v : free_ids_) check(v < nids && is_free[v], "free vertex id");
+    for(Vid v : released_ids_) check(v < nids && is_free[v], "released vertex id");
+
+    ghost_ = tds().create_face();
+    ghost_->set_in_domain(false);
+    const std::uint64_t nf = r.read<std::uint64_t>();
+    check(nf < big, "face count");
+    std::vector<Face_handle> faces;
+    std::vector<std::array<std::uint32_t, 3> > neighbours;
+    for(std::uint64_t i = 0; i < nf; ++i) {
+      std::array<std::uint32_t, 3> vs;
+      for(int k = 0; k < 3; ++k) vs[k] = r.read<std::uint32_t>();
+      Face_handle f = tds().create_face(vertex_at(vs[0]), vertex_at(vs[1]), vertex_at(vs[2]));
+      f->set_in_domain(true);
+      faces.push_back(f);
+      std::array<std::uint32_t, 3> ns;
+      for(int k = 0; k < 3; ++k) ns[k] = r.read<std::uint32_t>();
+      neighbours.push_back(ns);
+      for(int k = 0; k < 3; ++k) f->set_constraint(k, r.read<std::uint8_t>() != 0);
+      for(int k = 0; k < 3; ++k) {
+        vertex_at(vs[k])->set_face(f);
+        if(std::uint32_t* n = live_faces_.find(&*vertex_at(vs[k]))) ++*n;
+      }
+      if(r.read<std::uint8_t>() != 0) {
+        Face_record rec;
+        rec.circle_item = std::size_t(r.read<std::uint64_t>());
+        rec.front_edges = r.read<int>();
+        face_records_.insert(&*f, rec);
+      }
+    }
+    auto face_at = [&](std::uint32_t code) {
+      if(code == null_face) return Face_handle();
+      if(code == ghost_face) return ghost_;
+      check(code < faces.size(), "face index");
+      return faces[code];
+    };
+    for(std::size_t i = 0; i < faces.size(); ++i)
+      for(int k = 0; k < 3; ++k) faces[i]->set_neighbor(k, face_at(neighbours[i][k]));
+
+    const std::uint64_t ne = r.read<std::uint64_t>();
+    check(ne < big, "front size");
+    for(std::uint64_t i = 0; i < ne; ++i) {
+      const Edge_key k = r.read<Edge_key>();
+      check(source(k) < nids && target(k) < nids, "front edge key");
+      Front_edge fe;
+      fe.behind = face_at(r.read<std::uint32_t>());
+      fe.behind_index = r.read<int>();
+      check(fe.behind_index >= -1 && fe.behind_index < 3, "front edge");
+      if(fe.behind == ghost_) fe.behind_index = -1;
+      fe.constrained = r.read<std::uint8_t>() != 0;
+      fe.level = r.read<std::uint16_t>();
+      fe.version = r.read<std::uint32_t>();
+      front_.insert(k, fe);
+    }
+
+    const std::uint64_t nq = r.read<std::uint64_t>();
+    check(nq < big, "queue size");
+    std::vector<Queue_entry> entries;
+    for(std::uint64_t i = 0; i < nq; ++i) {
+      const double length = r.read<double>();
+      const Edge_key k = r.read<Edge_key>();
+      const std::uint32_t version = r.read<std::uint32_t>();
+      const std::uint16_t level = r.read<std::uint16_t>();
+      entries.push_back(Queue_entry{length, k, version, level});
+    }
+    queue_ = std::priority_queue<Queue_entry>(std::less<Queue_entry>(), std::move(entries));
+
+    index_.load(r);
+    triangle_octree_.load(r, [&](Binary_reader& br) { return face_at(br.read<std::uint32_t>()); });
+    constraint_octree_.load(r, [&](Binary_reader& br) {
+      const std::uint32_t a = br.read<std::uint32_t>();
+      const std::uint32_t b = br.read<std::uint32_t>();
+      return std::make_pair(vertex_at(a), vertex_at(b));
+    });
+
+    const std::uint64_t ng = r.read<std::uint64_t>();
+    check(ng < big, "ghost count");
+    for(std::uint64_t i = 0; i < ng; ++i) {
+      const Vertex_handle a = vertex_at(r.read<std::uint32_t>());
+      const Vertex_handle b = vertex_at(r.read<std::uint32_t>());
+      const double px = r.read<double>(), py = r.read<double>();
+      ghost_apex_[std::make_pair(&*a, &*b)] = Point(px, py);
+    }
+    // what the mesher cross-checks in every step must hold
+    for(Vid v = 0; v < nids; ++v)
+      if(!is_free[v]) check(index_.contains(v), "point quadtree");
+    front_.for_each([&](Edge_key k, const Front_edge&) { check(!is_free[source(k)] && !is_free[target(k)], "front edge"); });
+    face_records_.for_each([&](const Tds_face*, const Face_record& rec) {
+      check(triangle_octree_.is_alive(rec.circle_item), "circle octree");
+    });
+  }
+
+  void finish_stream()
+  {
+    finished_ = true;
+    if(!front_.empty()) close_remaining_front(); // never expected
+    sweep_finished_faces(true);
+    ghost_apex_.clear();
+    live_faces_.clear();
+    output_id_.clear();
+    ghost_ = Face_handle();
+    cdt_.clear();
+    stats_.number_of_faces = triangles_output_;
+    stats_.number_of_vertices = vertices_output_;
   }
 
   void finish_triangulation()
@@ -1920,6 +2645,32 @@ private:
   Constraint_octree constraint_octree_;
   double meshed_area_ = 0, domain_area_ = 0;
   int exponent_ = 0; // internal coordinates are the user's divided by 2^exponent_
+
+  // streaming (see set_output_sink())
+  struct Vertex_pair_hash
+  {
+    std::size_t operator()(const std::pair<const Tds_vertex*, const Tds_vertex*>& e) const
+    {
+      return std::hash<const void*>()(e.first) * 31 + std::hash<const void*>()(e.second);
+    }
+  };
+  Mesh_sink* sink_ = nullptr;
+  Face_handle ghost_; // stands for the finished faces beyond an edge
+  // the apex of the finished face beyond each edge of a face in memory, by
+  // the edge's end points as they run in that face
+  std::unordered_map<std::pair<const Tds_vertex*, const Tds_vertex*>, Point, Vertex_pair_hash> ghost_apex_;
+  // the vertices the mesher created, with their number of faces in memory
+  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_vertex*, std::uint32_t> live_faces_{nullptr};
+  // the sink's numbers of the vertices already written that are still in memory
+  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_vertex*, std::uint64_t> output_id_{nullptr};
+  std::size_t vertices_output_ = 0, triangles_output_ = 0;
+  std::size_t triangles_in_memory_ = 0;
+  std::size_t minimum_sweep_ = 4096;
+  std::size_t checkpoint_every_ = 0, next_checkpoint_ = 0;
+  std::string checkpoint_file_, checkpoint_user_data_;
+  bool checkpoint_stop_ = false, stop_now_ = false;
+  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_face*, bool> near_front_{nullptr};
+  std::size_t created_since_sweep_ = 0, sweep_after_ = 4096;
   Advancing_front_mesh_2::Statistics stats_;
 
   // scratch space reused across steps
@@ -1937,6 +2688,7 @@ private:
   std::unordered_set<Face_handle, Handle_hash> broken_set_;
   std::vector<std::array<Vid, 3> > removed_;
   std::vector<Edge_key> cavity_edges_;
+  std::vector<Edge_key> reopened_edges_; // see insert_point()
   std::vector<Edge_key> work_;
   std::vector<Edge_key> created_;
 };

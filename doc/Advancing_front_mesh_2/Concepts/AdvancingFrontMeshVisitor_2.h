@@ -73,6 +73,15 @@ reported by `on_face_created()`) and no `on_point_inserted()` follows.
 void on_face_removed(Face_handle f);
 
 /*!
+streaming mode only (`CGAL::Advancing_front_mesher_2::set_output_sink()`):
+called for a finished face `f`, one that no later point is expected to
+break, just before it is handed to the sink and removed from the
+triangulation. Its vertices and constraint flags may be read; its
+neighbours may already be gone.
+*/
+void on_face_finished(Face_handle f);
+
+/*!
 called after each front edge processed by the advancing front, with the
 fraction of the domain's area covered by triangles so far, in `[0, 1]`.
 */

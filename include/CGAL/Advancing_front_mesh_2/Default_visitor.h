@@ -34,6 +34,9 @@ struct Default_visitor
   template <class Face_handle> void on_face_created(Face_handle) {}
   /// called just before a triangle is removed (its circle was broken)
   template <class Face_handle> void on_face_removed(Face_handle) {}
+  /// streaming mode only: called for a finished triangle just before it is
+  /// handed to the sink and removed from the triangulation
+  template <class Face_handle> void on_face_finished(Face_handle) {}
   /// called after each processed front edge with the meshed fraction of
   /// the domain area, in [0, 1]
   void on_progress(double /*fraction*/) {}

@@ -28,7 +28,13 @@ enum Mesh_return_code
 {
   MESH_COMPLETE = 0,         ///< the front emptied normally
   ITERATION_LIMIT_REACHED,   ///< `number_of_iterations` front edges were processed
-  TIME_LIMIT_REACHED         ///< `maximum_running_time` seconds elapsed
+  TIME_LIMIT_REACHED,        ///< `maximum_running_time` seconds elapsed
+  /// streaming mode only: stopped right after writing a checkpoint, as
+  /// asked by `Advancing_front_mesher_2::set_checkpoint()`. Unlike the other
+  /// outcomes, the mesh is not complete: the sink holds the finished part,
+  /// the checkpoint the rest of the state; calling `refine_mesh()` again, or
+  /// `resume()` from the checkpoint in a later run, goes on meshing.
+  STOPPED_AT_CHECKPOINT
 };
 
 } // namespace Advancing_front_mesh_2

@@ -114,6 +114,24 @@ struct Statistics
   /// edges flipped by the final Lawson check; 0 unless the advancing front
   /// missed a broken circle, which the tests assert never happens
   std::size_t delaunay_repair_flips = 0;
+  /// Streaming mode (`Advancing_front_mesher_2::set_output_sink()`) only:
+  /// sweeps over the triangles in memory that looked for finished ones
+  std::size_t stream_sweeps = 0;
+  /// largest number of mesh triangles held in memory at any time
+  /// (streaming mode; the whole mesh otherwise)
+  std::size_t largest_triangles_in_memory = 0;
+  /// A finished triangle has gone to the sink: its circle was far enough
+  /// behind the front that no later point was expected to break it. These
+  /// two count the times that expectation failed (0 in every test and
+  /// benchmark): a later point lay inside the circle of a triangle already
+  /// written, which then stays as it is (the mesh is still valid, but
+  /// locally not Delaunay there) ...
+  std::size_t finished_triangles_broken = 0;
+  /// ... or a cavity exposed an edge of a triangle already written to the
+  /// front again (its circle then reaches into the unmeshed region)
+  std::size_t finished_triangles_reopened = 0;
+  /// checkpoints written (see `Advancing_front_mesher_2::set_checkpoint()`)
+  std::size_t checkpoints_written = 0;
   /// number of vertices and in-domain faces of the result
   std::size_t number_of_vertices = 0;
   std::size_t number_of_faces = 0;

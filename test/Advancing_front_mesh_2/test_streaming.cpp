@@ -1,0 +1,376 @@
+// Streaming mode and the restart facility (Mavriplis 1992, section 4):
+// finished triangles go to a sink while meshing, the mesh they make is the
+// mesh of the same run without streaming, and a run resumed from a
+// checkpoint gives the sink exactly what the uninterrupted run gives.
+#include "afm_test_harness.h"
+#include "afm_test_mesh.h"
+#include "afm_geometries.h"
+#include "afm_robustness_catalogue.h"
+
+#include <CGAL/Advancing_front_mesher_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace AFM = CGAL::Advancing_front_mesh_2;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef std::array<double, 6> Canonical_triangle;
+
+// Records every call in order; its checkpoint state is the number of calls
+// so far, and a sink resumed from it starts from the recorded calls cut
+// back to that point (as a file writer truncates its files).
+template <class Point>
+struct Recording_sink : AFM::Mesh_sink_2<Point>
+{
+  std::vector<std::array<double, 2> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::size_t> order; // 0: a vertex, 1: a triangle, in call order
+  bool misnumbered = false;
+
+  void add_vertex(std::size_t i, const Point& p) override
+  {
+    if(i != points.size()) misnumbered = true;
+    points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y())}});
+    order.push_back(0);
+  }
+  void add_triangle(std::size_t i, std::size_t j, std::size_t k) override
+  {
+    if(i >= points.size() || j >= points.size() || k >= points.size()) misnumbered = true;
+    triangles.push_back({{i, j, k}});
+    order.push_back(1);
+  }
+  std::string checkpoint_state() override
+  {
+    return std::to_string(points.size()) + " " + std::to_string(triangles.size()) + " " + std::to_string(order.size());
+  }
+  void resume_from(const Recording_sink& interrupted, const std::string& state)
+  {
+    std::size_t nv = 0, nt = 0, no = 0;
+    AFM_CHECK(std::sscanf(state.c_str(), "%zu %zu %zu", &nv, &nt, &no) == 3);
+    points.assign(interrupted.points.begin(), interrupted.points.begin() + nv);
+    triangles.assign(interrupted.triangles.begin(), interrupted.triangles.begin() + nt);
+    order.assign(interrupted.order.begin(), interrupted.order.begin() + no);
+  }
+
+  afm_check::Mesh mesh() const
+  {
+    afm_check::Mesh m;
+    m.vertices = points;
+    m.triangles = triangles;
+    return m;
+  }
+};
+
+template <class Point>
+Canonical_triangle canonical(const Point& a, const Point& b, const Point& c)
+{
+  const std::array<std::array<double, 2>, 3> v = {{{{CGAL::to_double(a.x()), CGAL::to_double(a.y())}},
+                                                   {{CGAL::to_double(b.x()), CGAL::to_double(b.y())}},
+                                                   {{CGAL::to_double(c.x()), CGAL::to_double(c.y())}}}};
+  int f = 0;
+  for(int i = 1; i < 3; ++i)
+    if(v[i] < v[f]) f = i;
+  return {{v[f][0], v[f][1], v[(f + 1) % 3][0], v[(f + 1) % 3][1], v[(f + 2) % 3][0], v[(f + 2) % 3][1]}};
+}
+
+template <class Point>
+std::multiset<Canonical_triangle> canonical(const Recording_sink<Point>& s)
+{
+  std::multiset<Canonical_triangle> out;
+  for(const auto& t : s.triangles) {
+    const auto& a = s.points[t[0]];
+    const auto& b = s.points[t[1]];
+    const auto& c = s.points[t[2]];
+    out.insert(canonical(Point(a[0], a[1]), Point(b[0], b[1]), Point(c[0], c[1])));
+  }
+  return out;
+}
+
+struct Counting_visitor : AFM::Default_visitor
+{
+  std::size_t* finished = nullptr;
+  template <class Face_handle> void on_face_finished(Face_handle) { ++*finished; }
+};
+
+std::filesystem::path scratch_directory()
+{
+  const std::filesystem::path dir =
+    std::filesystem::temp_directory_path() / ("afm_streaming_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// The streamed triangles are the in-core ones, checked, with every
+// vertex written once and used; with a small sweep interval the finished
+// triangles leave memory while the run goes on.
+template <class K, class Sizing>
+void check_streaming(const afm_test::Poly_data& in, const Sizing& sizing, const std::string& label,
+                     std::size_t sweep_interval)
+{
+  typedef typename afm_test::Types<K>::CDT CDT;
+  typedef typename K::Point_2 Point;
+  std::multiset<Canonical_triangle> in_core;
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    const auto seeds = afm_test::seeds_of<CDT>(in);
+    CGAL::Advancing_front_mesher_2<CDT, Sizing> mesher(cdt, sizing);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.refine_mesh();
+    for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+      if(f->is_in_domain())
+        in_core.insert(canonical(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+  }
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  const auto seeds = afm_test::seeds_of<CDT>(in);
+  Recording_sink<Point> sink;
+  std::size_t finished = 0;
+  Counting_visitor visitor;
+  visitor.finished = &finished;
+  CGAL::Advancing_front_mesher_2<CDT, Sizing, Counting_visitor> mesher(cdt, sizing, visitor);
+  mesher.set_seeds(seeds.begin(), seeds.end());
+  mesher.set_output_sink(&sink);
+  mesher.set_sweep_interval(sweep_interval);
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  const AFM::Statistics& st = mesher.statistics();
+  AFM_CHECK_MSG(!sink.misnumbered, label << ": vertices not numbered 0, 1, 2, ... before their use");
+  AFM_CHECK_MSG(cdt.number_of_vertices() == 0, label << ": the triangulation is not left empty");
+  AFM_CHECK_MSG(st.finished_triangles_broken == 0 && st.finished_triangles_reopened == 0,
+                label << ": finished triangles needed again: " << st.finished_triangles_broken << " broken, "
+                      << st.finished_triangles_reopened << " reopened");
+  AFM_CHECK_MSG(canonical(sink) == in_core, label << ": the streamed triangles differ from the in-core mesh ("
+                                                  << sink.triangles.size() << " vs " << in_core.size() << ")");
+  AFM_CHECK_MSG(finished == sink.triangles.size() && st.number_of_faces == sink.triangles.size() &&
+                  st.number_of_vertices == sink.points.size(),
+                label << ": counts disagree");
+  std::vector<bool> used(sink.points.size(), false);
+  for(const auto& t : sink.triangles)
+    for(std::size_t v : t) used[v] = true;
+  AFM_CHECK_MSG(std::find(used.begin(), used.end(), false) == used.end(), label << ": a vertex no triangle uses");
+  const afm_check::Report report = afm_check::check_mesh(afm_test::to_pslg(in), sink.mesh());
+  AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
+  std::cout << "  " << label << ": " << sink.triangles.size() << " triangles, at most "
+            << st.largest_triangles_in_memory << " in memory, " << st.stream_sweeps << " sweeps\n";
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_streaming_equals_in_core)
+{
+  // small sweep intervals: the triangles leave memory early and often,
+  // which is where a wrong test of "finished" would show
+  for(const afm_robustness::Case& c : afm_robustness::catalogue())
+    check_streaming<Epick>(c.in, afm_robustness::Case_size<Epick>(c), c.name, 16);
+  const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
+  check_streaming<Epick>(square, afm_test::uniform<Epick>(0.01), "square with hole, h = 0.01", 1);
+  check_streaming<Epick>(square, afm_test::uniform<Epick>(0.01), "square with hole, h = 0.01", 4096);
+  check_streaming<Epeck>(afm_geometry::multi_element_airfoil(10, 32),
+                         afm_test::Boundary_graded_size<Epeck>(afm_geometry::multi_element_airfoil(10, 32), 0.3),
+                         "four-element airfoil, Epeck", 64);
+}
+
+AFM_TEST_CASE(test_streaming_memory_stays_near_the_front)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.004);
+  CDT cdt;
+  afm_test::build_cdt(cdt, square);
+  const auto seeds = afm_test::seeds_of<CDT>(square);
+  AFM::Mesh_sink_2<Epick::Point_2> discard;
+  CGAL::Advancing_front_mesher_2<CDT> mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(0.004));
+  mesher.set_seeds(seeds.begin(), seeds.end());
+  mesher.set_output_sink(&discard);
+  mesher.refine_mesh();
+  const AFM::Statistics& st = mesher.statistics();
+  std::cout << "  " << st.number_of_faces << " triangles, at most " << st.largest_triangles_in_memory
+            << " in memory\n";
+  // a band along the front, not the mesh: 13,666 of 116,699 triangles here
+  // (12%), 2.2% at 10M (219,470) and 1.8% at 100M
+  AFM_CHECK_MSG(st.number_of_faces > 100000, st.number_of_faces);
+  AFM_CHECK_MSG(st.largest_triangles_in_memory * 8 < st.number_of_faces, st.largest_triangles_in_memory);
+}
+
+namespace {
+
+// A run interrupted after its first checkpoint (and a few hundred steps
+// more, whose output a resumed run must discard), resumed in a new mesher
+// and triangulation: the sink receives exactly the calls of the
+// uninterrupted run.
+template <class K, class Sizing>
+void check_resume(const afm_test::Poly_data& in, const Sizing& sizing, const std::string& label,
+                  std::size_t every, std::size_t sweep_interval)
+{
+  typedef typename afm_test::Types<K>::CDT CDT;
+  typedef typename K::Point_2 Point;
+  typedef CGAL::Advancing_front_mesher_2<CDT, Sizing> Mesher;
+  const std::filesystem::path dir = scratch_directory();
+  const std::string file = (dir / "run.checkpoint").string();
+  const auto seeds = afm_test::seeds_of<CDT>(in);
+
+  Recording_sink<Point> whole;
+  AFM::Statistics whole_stats;
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    Mesher mesher(cdt, sizing);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.set_output_sink(&whole);
+    mesher.set_sweep_interval(sweep_interval);
+    mesher.refine_mesh();
+    whole_stats = mesher.statistics();
+  }
+  Recording_sink<Point> first;
+  std::size_t checkpoints = 0;
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    Mesher mesher(cdt, sizing);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.set_output_sink(&first);
+    mesher.set_sweep_interval(sweep_interval);
+    mesher.set_checkpoint(every, file, "user data");
+    std::size_t after = 0;
+    while(mesher.step_by_step_refine_mesh()) {
+      if(mesher.statistics().checkpoints_written > 0 && ++after == 300) break;
+    }
+    checkpoints = mesher.statistics().checkpoints_written;
+    // abandoned here, as by a crash: nothing is finished
+  }
+  AFM_CHECK_MSG(checkpoints > 0, label << ": no checkpoint was written");
+  const typename Mesher::Checkpoint_info info = Mesher::read_checkpoint_info(file);
+  AFM_CHECK(info.user_data == "user data");
+  Recording_sink<Point> resumed;
+  resumed.resume_from(first, info.sink_state);
+  AFM_CHECK(info.vertices_written == resumed.points.size() && info.triangles_written == resumed.triangles.size());
+  CDT empty;
+  Mesher mesher(empty, sizing);
+  mesher.set_output_sink(&resumed);
+  mesher.resume(file);
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  const AFM::Statistics& st = mesher.statistics();
+  AFM_CHECK_MSG(resumed.order == whole.order && resumed.points == whole.points && resumed.triangles == whole.triangles,
+                label << ": the resumed run gave " << resumed.triangles.size() << " triangles, the uninterrupted one "
+                      << whole.triangles.size() << " (or the same in another order or numbering)");
+  AFM_CHECK_MSG(st.points_inserted == whole_stats.points_inserted &&
+                  st.front_edges_processed == whole_stats.front_edges_processed &&
+                  st.largest_front == whole_stats.largest_front && st.number_of_faces == whole_stats.number_of_faces,
+                label << ": the statistics differ");
+  AFM_CHECK_MSG(empty.number_of_vertices() == 0, label << ": the triangulation is not left empty");
+  std::cout << "  " << label << ": resumed after " << info.triangles_written << " of " << whole.triangles.size()
+            << " triangles: same output\n";
+  std::filesystem::remove_all(dir);
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_streaming_resume_equals_uninterrupted)
+{
+  for(const afm_robustness::Case& c : afm_robustness::catalogue())
+    check_resume<Epick>(c.in, afm_robustness::Case_size<Epick>(c), c.name, 100, 32);
+  const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
+  check_resume<Epick>(square, afm_test::uniform<Epick>(0.01), "square with hole, h = 0.01", 5000, 4096);
+  const auto airfoil = afm_geometry::multi_element_airfoil(10, 32);
+  check_resume<Epeck>(airfoil, afm_test::Boundary_graded_size<Epeck>(airfoil, 0.3), "four-element airfoil, Epeck",
+                      1000, 64);
+}
+
+AFM_TEST_CASE(test_streaming_checkpoint_errors)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  typedef afm_test::Types<Epeck>::CDT CDT_exact;
+  typedef CGAL::Advancing_front_mesher_2<CDT> Mesher;
+  const std::filesystem::path dir = scratch_directory();
+  const std::string file = (dir / "run.checkpoint").string();
+  const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.05);
+  Recording_sink<Epick::Point_2> sink;
+  {
+    CDT cdt;
+    afm_test::build_cdt(cdt, square);
+    Mesher mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(0.05));
+    mesher.set_output_sink(&sink);
+    mesher.set_sweep_interval(16);
+    mesher.set_checkpoint(50, file, "", true);
+    AFM_CHECK(mesher.refine_mesh() == AFM::STOPPED_AT_CHECKPOINT);
+  }
+  std::string bytes;
+  {
+    std::ifstream is(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(is), std::istreambuf_iterator<char>());
+  }
+  AFM_CHECK(bytes.size() > 1000);
+  auto resume_fails = [&](const std::string& content, const std::string& what) {
+    const std::string bad = (dir / "bad.checkpoint").string();
+    std::ofstream(bad, std::ios::binary) << content;
+    Recording_sink<Epick::Point_2> s;
+    CDT empty;
+    Mesher mesher(empty, AFM::Uniform_sizing_field_2<Epick>(0.05));
+    mesher.set_output_sink(&s);
+    bool thrown = false;
+    try {
+      mesher.resume(bad);
+    } catch(const std::runtime_error& e) {
+      thrown = std::string(e.what()).find(bad) == 0;
+    }
+    AFM_CHECK_MSG(thrown, what << ": not refused with a message naming the file");
+    AFM_CHECK_MSG(empty.number_of_vertices() == 0 && empty.tds().number_of_faces() == 0,
+                  what << ": left something in the triangulation");
+  };
+  for(std::size_t at : {std::size_t(100), bytes.size() / 3, bytes.size() / 2, bytes.size() - 20}) {
+    std::string flipped = bytes;
+    flipped[at] = char(flipped[at] ^ 0x5a);
+    resume_fails(flipped, "a byte flipped at " + std::to_string(at));
+  }
+  resume_fails(bytes.substr(0, bytes.size() / 2), "truncated");
+  resume_fails("", "empty");
+  resume_fails("not a checkpoint at all", "garbage");
+  {
+    // another kernel
+    CDT_exact empty;
+    CGAL::Advancing_front_mesher_2<CDT_exact> mesher(empty, AFM::Uniform_sizing_field_2<Epeck>(0.05));
+    Recording_sink<Epeck::Point_2> s;
+    mesher.set_output_sink(&s);
+    bool thrown = false;
+    try {
+      mesher.resume(file);
+    } catch(const std::runtime_error& e) {
+      thrown = std::string(e.what()).find("kernel") != std::string::npos;
+    }
+    AFM_CHECK(thrown);
+  }
+  {
+    // not empty, no sink
+    CDT cdt;
+    afm_test::build_cdt(cdt, square);
+    Mesher mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(0.05));
+    bool thrown = false;
+    try {
+      mesher.resume(file);
+    } catch(const std::logic_error&) {
+      thrown = true;
+    }
+    AFM_CHECK_MSG(thrown, "resumed without a sink");
+    mesher.set_output_sink(&sink);
+    thrown = false;
+    try {
+      mesher.resume(file);
+    } catch(const std::logic_error&) {
+      thrown = true;
+    }
+    AFM_CHECK_MSG(thrown, "resumed into a triangulation that is not empty");
+  }
+  std::filesystem::remove_all(dir);
+}
