@@ -297,8 +297,8 @@ int run(const Options& opt)
          << ", \"largest_front\": " << st.largest_front
          << ", \"largest_triangles_in_memory\": " << st.largest_triangles_in_memory
          << ", \"stream_sweeps\": " << st.stream_sweeps
+         << ", \"points_refused_for_finished_triangles\": " << st.points_refused_for_finished_triangles
          << ", \"finished_triangles_broken\": " << st.finished_triangles_broken
-         << ", \"finished_triangles_reopened\": " << st.finished_triangles_reopened
          << ", \"checkpoints_written\": " << st.checkpoints_written << "}}";
       std::cout << os.str() << std::endl;
     }
@@ -577,9 +577,28 @@ Options parse(const std::vector<std::string>& args, bool resuming = false)
     resumed.stats = opt.stats;
     resumed.report = opt.report;
     resumed.stop_after_checkpoint = opt.stop_after_checkpoint;
-    if(vm.count("time-limit")) resumed.time_limit = opt.time_limit;
-    if(vm.count("max-steps")) resumed.max_steps = std::size_t(max_steps);
-    if(!checkpoint.empty()) parse_checkpoint(checkpoint, resumed);
+    // limits apply to a session: only those given now
+    resumed.time_limit = vm.count("time-limit") ? opt.time_limit : 0;
+    resumed.max_steps = vm.count("max-steps") ? std::size_t(max_steps) : 0;
+    if(!checkpoint.empty()) {
+      parse_checkpoint(checkpoint, resumed);
+      // the checkpoints of this session store the new file, so that a later
+      // resume goes on writing there
+      std::vector<std::string> kept;
+      for(std::size_t i = 0; i < stored_args.size(); ++i) {
+        if(stored_args[i] == "--checkpoint-every") {
+          i += 2;
+          continue;
+        }
+        kept.push_back(stored_args[i]);
+      }
+      kept.insert(kept.end(), {"--checkpoint-every", checkpoint[0], checkpoint[1]});
+      resumed.arguments.clear();
+      for(const std::string& a : kept) {
+        if(!resumed.arguments.empty()) resumed.arguments += '\0';
+        resumed.arguments += a;
+      }
+    }
     if(resumed.stop_after_checkpoint && resumed.checkpoint_every == 0)
       throw Usage_error("--stop-after-checkpoint needs --checkpoint-every (given now or in the interrupted run)");
     if(vm.count("time-limit") && (!(opt.time_limit > 0) || !std::isfinite(opt.time_limit)))

@@ -39,6 +39,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <list>
 #include <queue>
@@ -270,11 +271,12 @@ public:
   (Mavriplis 1992, section 4). The visitor's `on_face_finished()` sees each
   of them first. At the end every triangle has gone to the sink and `cdt` is
   left empty (`clear()`ed): the mesh is wherever the sink put it.
-  Statistics count the finished triangles that a later point would after
-  all have changed (`finished_triangles_broken`,
-  `finished_triangles_reopened`): with them at 0, which every test and
-  benchmark measured, the triangles are exactly those of the same run
-  without streaming.
+  A later point whose cavity would reach a finished triangle all the same
+  is refused (the edge is closed on an existing point, as for any refused
+  point), so the mesh stays a constrained Delaunay triangulation; the
+  statistic `points_refused_for_finished_triangles` counts such points, and
+  with it at 0 the triangles are exactly those of the same run without
+  streaming.
 
   Must be called before meshing starts; `nullptr` switches streaming off.
   The sink must outlive the meshing.
@@ -341,8 +343,7 @@ public:
   */
   static Checkpoint_info read_checkpoint_info(const std::string& file_name)
   {
-    std::ifstream is(file_name.c_str(), std::ios::in | std::ios::binary);
-    if(!is) throw std::runtime_error(file_name + ": cannot read the checkpoint");
+    std::istringstream is(verified_checkpoint(file_name));
     Advancing_front_mesh_2::internal::Binary_reader r(is, file_name);
     return read_checkpoint_header(r, false);
   }
@@ -367,8 +368,7 @@ public:
       throw std::logic_error("Advancing_front_mesher_2::resume(): set the output sink first");
     if(cdt_.number_of_vertices() != 0 || cdt_.dimension() != -1)
       throw std::logic_error("Advancing_front_mesher_2::resume(): the triangulation must be empty");
-    std::ifstream is(file_name.c_str(), std::ios::in | std::ios::binary);
-    if(!is) throw std::runtime_error(file_name + ": cannot read the checkpoint");
+    std::istringstream is(verified_checkpoint(file_name));
     Advancing_front_mesh_2::internal::Binary_reader r(is, file_name);
     clear_state();
     try {
@@ -394,6 +394,7 @@ public:
   {
     if(sink_ == nullptr) throw std::logic_error("Advancing_front_mesher_2: checkpoints need streaming mode");
     if(!initialized_) init();
+    if(finished_) throw std::logic_error("Advancing_front_mesher_2: the mesh is complete, there is nothing to checkpoint");
     const std::string sink_state = sink_->checkpoint_state();
     const std::string tmp = file_name + ".tmp";
     // counted in the state it writes: a resumed run counts on from there
@@ -464,6 +465,9 @@ public:
       }
     }
     if(rc == Advancing_front_mesh_2::STOPPED_AT_CHECKPOINT) {
+      // what the sink has so far
+      stats_.number_of_faces = triangles_output_;
+      stats_.number_of_vertices = vertices_output_;
       enter_phase(FRONT_SELECTION);
       store_phase_times();
       stats_.meshing_time += seconds_since(start);
@@ -496,7 +500,7 @@ public:
       cdt_, seeds_.begin(), seeds_.end(), seeds_mark_);
     exponent_ = choose_exponent();
     build_front();
-    if(sink_ != nullptr) {
+    if(sink_ != nullptr && !finished_) {
       // the face that stands for faces gone to the sink: not in the domain,
       // so cavities stop at it as at the outside
       ghost_ = tds().create_face();
@@ -518,6 +522,7 @@ public:
   {
     if(!initialized_) init();
     if(finished_) return false;
+    stop_now_ = false; // a stop after a checkpoint concerns refine_mesh() only
     try {
       if(step()) return true;
     } catch(...) {
@@ -1191,9 +1196,9 @@ private:
           remove_front_edge(t, s);
         }
       } else if(sink_ != nullptr && g == ghost_) {
-        // beyond lies a finished triangle (or, after a restart, the outside)
-        if(ghost_apex_.count(std::make_pair(&*f->vertex(ccw(k)), &*f->vertex(cw(k)))) != 0)
-          reopened_edges_.push_back(key(s, t));
+        // beyond lies the outside, after a restart (a cavity next to a
+        // finished triangle is refused, see insert_point())
+        CGAL_assertion(ghost_apex_.count(std::make_pair(&*f->vertex(ccw(k)), &*f->vertex(cw(k)))) == 0);
         add_front_edge(s, t, ghost_, -1, constrained);
         if(created) created->push_back(key(s, t));
       } else {
@@ -1841,15 +1846,16 @@ private:
         }
       });
     }
+    bool reaches_finished = false;
     for(std::size_t i = 0; i < broken_.size(); ++i) {
       Face_handle f = broken_[i];
       for(int k = 0; k < 3; ++k) {
-        if(f->is_constrained(k)) continue;
         Face_handle g = f->neighbor(k);
         if(sink_ != nullptr && g == ghost_) {
-          count_broken_finished_face(f, k, p);
+          if(is_finished_face_beyond(f, k, p)) reaches_finished = true;
           continue;
         }
+        if(f->is_constrained(k)) continue;
         if(g == Face_handle() || !g->is_in_domain() || broken_set_.count(g)) continue;
         ++stats_.incircle_tests;
         if(pred_.strictly_inside_circle(g->vertex(0)->point(), g->vertex(1)->point(),
@@ -1859,6 +1865,17 @@ private:
         }
       }
     }
+    if(reaches_finished) {
+      // The cavity would open the mesh next to a triangle already given to
+      // the sink (or break it), which then could no longer follow: the point
+      // is refused, nothing has changed yet, and the edge is closed on an
+      // existing point instead, as for any refused point. The mesh stays a
+      // constrained Delaunay triangulation; it differs from the run without
+      // streaming here, which the statistics count.
+      ++stats_.points_refused_for_finished_triangles;
+      return false;
+    }
+
     // step 10: the size bound grows to the largest broken circle
     const Circle cp = circle_of(x(a), y(a), x(b), y(b), px, py);
     double rho_new = (std::max)(rho, cp.r);
@@ -1868,7 +1885,6 @@ private:
     // step 9: remove them, remembering them to restore them if p is rejected
     removed_.clear();
     cavity_edges_.clear();
-    reopened_edges_.clear();
     for(Face_handle f : broken_) {
       removed_.push_back({{acquire(f->vertex(0)), acquire(f->vertex(1)), acquire(f->vertex(2))}});
       remove_triangle(f, &cavity_edges_);
@@ -1958,14 +1974,6 @@ private:
       for(Edge_key e : created)
         if(source(e) == pid || target(e) == pid) work_.push_back(e);
     }
-    // An edge of a finished triangle that the cavity exposed and the
-    // triangles about p did not cover again stays on the front: the
-    // triangle would have been a front triangle again, which the mesher
-    // without streaming could break later.
-    for(Edge_key k : reopened_edges_) {
-      const Front_edge* fe = front_.find(k);
-      if(fe != nullptr && fe->behind == ghost_) ++stats_.finished_triangles_reopened;
-    }
     return true;
   }
 
@@ -2050,9 +2058,8 @@ private:
   // circle, enlarged by `finished_margin`, meets no front edge and holds no
   // free point, and whose neighbours' circles are as clear, is taken for
   // finished (see sweep_finished_faces()). The margin covers the cavities
-  // that open the mesh a little behind the front; whether it did is checked
-  // as the run goes on (count_broken_finished_face(), and the reopened
-  // edges in insert_point()).
+  // that open the mesh a little behind the front; a point whose cavity
+  // reaches a finished triangle all the same is refused (insert_point()).
   static constexpr double finished_margin = 2.0;
 
   // Is any front edge or active vertex within `radius` of (cx, cy)?
@@ -2083,15 +2090,20 @@ private:
     return !front_meets_disk(c.cx, c.cy, finished_margin * c.r);
   }
 
-  // A cavity's walk reached finished face beyond edge k of f: had that face
-  // been kept, was it broken by p?
-  void count_broken_finished_face(Face_handle f, int k, const Point& p)
+  // Is a finished face beyond edge k of f, a face of p's cavity? (Not the
+  // outside, which stands behind the ghost after a restart.) Counts it when
+  // the mesher without streaming would have broken it: its circle holds p
+  // and the walk would have crossed the edge.
+  bool is_finished_face_beyond(Face_handle f, int k, const Point& p)
   {
     const Vertex_handle s = f->vertex(ccw(k)), t = f->vertex(cw(k));
     const auto it = ghost_apex_.find(std::make_pair(&*s, &*t));
-    if(it == ghost_apex_.end()) return; // the outside, after a restart
-    ++stats_.incircle_tests;
-    if(pred_.strictly_inside_circle(t->point(), s->point(), it->second, p)) ++stats_.finished_triangles_broken;
+    if(it == ghost_apex_.end()) return false;
+    if(!f->is_constrained(k)) {
+      ++stats_.incircle_tests;
+      if(pred_.strictly_inside_circle(t->point(), s->point(), it->second, p)) ++stats_.finished_triangles_broken;
+    }
+    return true;
   }
 
   std::size_t output_vertex(Vertex_handle v)
@@ -2134,9 +2146,6 @@ private:
       keyed.push_back(k);
     }
     std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
-    // marked out of the domain: the faces of the batch then tell themselves
-    // apart from the faces that stay
-    for(Face_handle f : faces) f->set_in_domain(false);
     for(const Keyed& k : keyed) {
       visitor_.on_face_finished(k.face);
       std::array<std::size_t, 3> ids;
@@ -2144,19 +2153,32 @@ private:
       sink_->add_triangle(ids[0], ids[1], ids[2]);
       ++triangles_output_;
     }
+    batch_.clear();
+    for(Face_handle f : faces) batch_.insert(&*f, true);
+    // all links to the batch are cut before any face is deleted (a deleted
+    // face's slot is reused, and a stale link could then name a new face)
     for(Face_handle f : faces) {
       for(int k = 0; k < 3; ++k) {
         Face_handle g = f->neighbor(k);
         if(g == ghost_) {
           ghost_apex_.erase(std::make_pair(&*f->vertex(ccw(k)), &*f->vertex(cw(k))));
-        } else if(g != Face_handle() && g->is_in_domain()) {
+        } else if(g == Face_handle() || batch_.find(&*g) != nullptr) {
+          continue;
+        } else if(g->is_in_domain()) {
           // a face that stays: its edge now faces a finished triangle, whose
-          // apex is kept to tell whether a cavity would have broken it
+          // apex is kept to tell whether a cavity reaches it
           const int j = g->index(f);
           g->set_neighbor(j, ghost_);
           ghost_apex_[std::make_pair(&*g->vertex(ccw(j)), &*g->vertex(cw(j)))] = f->vertex(k)->point();
+        } else {
+          // a face outside the domain: it never links to the mesh again
+          g->set_neighbor(g->index(f), Face_handle());
         }
       }
+    }
+    batch_.clear();
+    batch_.shrink_if_sparse();
+    for(Face_handle f : faces) {
       std::array<Vertex_handle, 3> vs = {{f->vertex(0), f->vertex(1), f->vertex(2)}};
       tds().delete_face(f);
       --triangles_in_memory_;
@@ -2219,6 +2241,26 @@ private:
   typedef Advancing_front_mesh_2::internal::Binary_reader Binary_reader;
 
   static std::string checkpoint_magic() { return "Advancing_front_mesh_2 checkpoint"; }
+
+  // The file's content, once its checksum is verified: nothing is built
+  // from a damaged checkpoint, which is refused as a whole.
+  static std::string verified_checkpoint(const std::string& file_name)
+  {
+    std::ifstream file(file_name.c_str(), std::ios::in | std::ios::binary);
+    if(!file) throw std::runtime_error(file_name + ": cannot read the checkpoint");
+    std::string content((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    std::istringstream is(content);
+    Binary_reader r(is, file_name);
+    if(content.size() < sizeof(std::uint64_t)) r.fail("truncated");
+    std::vector<char> buffer(std::size_t(1) << 16);
+    for(std::size_t left = content.size() - sizeof(std::uint64_t); left > 0;) {
+      const std::size_t n = (std::min)(left, buffer.size());
+      r.read_bytes(buffer.data(), n);
+      left -= n;
+    }
+    r.check_checksum();
+    return content;
+  }
   static std::string traits_name() { return typeid(Geom_traits).name(); }
 
   static Checkpoint_info read_checkpoint_header(Binary_reader& r, bool check_traits = true)
@@ -2402,8 +2444,9 @@ private:
 
     const std::uint64_t nids = r.read<std::uint64_t>();
     check(nids < no_vertex, "number of vertex ids");
-    std::vector<bool> is_free(std::size_t(nids), true);
+    std::vector<bool> is_free; // grown per record: nids is not trusted yet
     for(std::uint64_t v = 0; v < nids; ++v) {
+      is_free.push_back(true);
       const std::uint32_t code = r.read<std::uint32_t>();
       vertex_.push_back(code == no_index ? Vertex_handle() : vertex_at(code));
       xy_.push_back(r.read<std::array<double, 2> >());
@@ -2669,7 +2712,7 @@ private:
   std::size_t checkpoint_every_ = 0, next_checkpoint_ = 0;
   std::string checkpoint_file_, checkpoint_user_data_;
   bool checkpoint_stop_ = false, stop_now_ = false;
-  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_face*, bool> near_front_{nullptr};
+  Advancing_front_mesh_2::internal::Flat_hash_map<const Tds_face*, bool> near_front_{nullptr}, batch_{nullptr};
   std::size_t created_since_sweep_ = 0, sweep_after_ = 4096;
   Advancing_front_mesh_2::Statistics stats_;
 
@@ -2688,7 +2731,6 @@ private:
   std::unordered_set<Face_handle, Handle_hash> broken_set_;
   std::vector<std::array<Vid, 3> > removed_;
   std::vector<Edge_key> cavity_edges_;
-  std::vector<Edge_key> reopened_edges_; // see insert_point()
   std::vector<Edge_key> work_;
   std::vector<Edge_key> created_;
 };
