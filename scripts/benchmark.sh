@@ -7,8 +7,10 @@
 # {benchmark_results.md, benchmark_time.svg, benchmark_memory.svg} (and PNGs
 # when rsvg-convert is installed), then copies the results into README.md and
 # the user manual between the lines <!-- BEGIN BENCHMARK RESULTS --> and
-# <!-- END BENCHMARK RESULTS -->, where those lines exist.
-# About 12 minutes on 2 cores, build included. Arguments are passed on to
+# <!-- END BENCHMARK RESULTS -->, where those lines exist. Then
+# streaming_memory compares streaming with meshing in memory and Mesh_2
+# (streaming_results.md in the same folder).
+# About 17 minutes on 2 cores, build included. Arguments are passed on to
 # mesher_comparison, e.g. --quick (a one-minute smoke run) or
 # --max-triangles 1e6 (caps the square series, which runs up to 1e7).
 set -euo pipefail
@@ -25,7 +27,7 @@ fi
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DAFM_BUILD_BENCHMARKS=ON \
   -DAFM_BUILD_EXAMPLES=OFF -DAFM_BUILD_TESTS=OFF > /dev/null
-cmake --build build-benchmark -j2 --target mesher_comparison
+cmake --build build-benchmark -j2 --target mesher_comparison streaming_memory
 echo "built in $((SECONDS - start)) s" >&2
 
 out=doc/Advancing_front_mesh_2/benchmark
@@ -36,6 +38,10 @@ if [ ! -d "$data/mesh2d" ]; then
   data=""
 fi
 build-benchmark/benchmark/Advancing_front_mesh_2/mesher_comparison --data "$data" --out "$out" "$@"
+# streaming against meshing in memory and Mesh_2 (about 5 minutes)
+streaming_sizes=1e5,1e6,1e7
+case " $* " in *" --quick "*) streaming_sizes=1e4,1e5 ;; esac
+build-benchmark/benchmark/Advancing_front_mesh_2/streaming_memory --sizes "$streaming_sizes" --out "$out" > /dev/null
 
 # The results between the markers: without their title line, headings one
 # level down (they sit in a section of their own), plot links relative to

@@ -18,7 +18,8 @@
 // uninterrupted run.
 //
 // Exit codes: 0 success; 1 invalid input (one line "afmesh_2: error:
-// FILE[:LINE]: what is wrong" on stderr); 2 bad usage; 3 internal error.
+// FILE[:LINE]: what is wrong" on stderr); 2 bad usage; 3 an output or
+// checkpoint that could not be written, or an internal error.
 
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
@@ -44,6 +45,9 @@
 #include <chrono>
 #include <memory>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -90,14 +94,48 @@ struct Options
   bool stop_after_checkpoint = false;
   std::string resume;               // checkpoint to resume from
   std::string arguments;            // the run's own arguments, '\0'-separated, stored in checkpoints
+  std::string input_checksum, sources_checksum; // of the files a checkpointed run read
 };
+
+// An absolute name, so that a checkpointed run can be resumed from another
+// directory.
+std::string absolute_path(const std::string& name)
+{
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::absolute(name, ec);
+  return ec ? name : p.lexically_normal().string();
+}
+
+// FNV-1a over the file's bytes, in hexadecimal ("" if it cannot be read):
+// a resumed run must read the same input as the interrupted one.
+std::string file_checksum(const std::string& name)
+{
+  std::ifstream is(name.c_str(), std::ios::in | std::ios::binary);
+  if(!is) return std::string();
+  std::uint64_t h = 14695981039346656037ull;
+  char buffer[1 << 16];
+  while(is.read(buffer, sizeof buffer) || is.gcount() > 0) {
+    for(std::streamsize i = 0; i < is.gcount(); ++i) {
+      h ^= std::uint64_t(static_cast<unsigned char>(buffer[i]));
+      h *= 1099511628211ull;
+    }
+    if(!is) break;
+  }
+  std::ostringstream os;
+  os << std::hex << std::setw(16) << std::setfill('0') << h;
+  return os.str();
+}
 
 // peak resident memory of the process, in bytes
 double peak_rss_bytes()
 {
   struct rusage u;
   if(getrusage(RUSAGE_SELF, &u) != 0) return std::nan("");
-  return 1024. * double(u.ru_maxrss); // kilobytes on Linux
+#ifdef __APPLE__
+  return double(u.ru_maxrss); // bytes on macOS
+#else
+  return 1024. * double(u.ru_maxrss); // kilobytes on Linux and the BSDs
+#endif
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t)
@@ -171,6 +209,15 @@ int run(const Options& opt)
     throw Input_error(e.what());
   }
   const double t_read = seconds_since(t_start);
+  if(!opt.resume.empty()) {
+    // the size field is made again from the input: it must be the same
+    if(!opt.input_checksum.empty() && file_checksum(opt.input) != opt.input_checksum)
+      throw Input_error(opt.input + ": not the file the checkpoint " + opt.resume +
+                        " was made from (its content changed)");
+    if(!opt.sources_checksum.empty() && file_checksum(opt.sources) != opt.sources_checksum)
+      throw Input_error(opt.sources + ": not the file the checkpoint " + opt.resume +
+                        " was made from (its content changed)");
+  }
 
   // The boundary, checked on the way (crossings, overlaps, open
   // boundaries, misplaced hole seeds: one line naming the file and line).
@@ -228,9 +275,21 @@ int run(const Options& opt)
   mesher.set_iteration_limit(opt.max_steps);
   std::unique_ptr<AFM::IO::Streaming_mesh_writer<Point> > writer;
   if(opt.stream) {
+    if(opt.checkpoint_every > 0) {
+      // before any output is touched: a checkpoint that cannot be written
+      // would otherwise only show after the first K triangles
+      const std::string tmp = opt.checkpoint_file + ".tmp";
+      if(!std::ofstream(tmp.c_str(), std::ios::out | std::ios::binary | std::ios::app))
+        throw Input_error(tmp + ": cannot write the checkpoint here");
+      std::remove(tmp.c_str());
+    }
     try {
       if(opt.resume.empty()) {
-        writer.reset(new AFM::IO::Streaming_mesh_writer<Point>(opt.outputs));
+        std::vector<std::string> outputs = opt.outputs;
+        // the writer's state in a checkpoint names them
+        if(opt.checkpoint_every > 0)
+          for(std::string& out : outputs) out = absolute_path(out);
+        writer.reset(new AFM::IO::Streaming_mesh_writer<Point>(outputs));
       } else {
         typedef CGAL::Advancing_front_mesher_2<CDT, Cli_sizing_field<K>, Progress_visitor> Mesher;
         writer = AFM::IO::Streaming_mesh_writer<Point>::resume(Mesher::read_checkpoint_info(opt.resume).sink_state);
@@ -250,7 +309,19 @@ int run(const Options& opt)
       mesher.set_checkpoint(opt.checkpoint_every, opt.checkpoint_file, opt.arguments, opt.stop_after_checkpoint);
   }
   const auto t_mesh = std::chrono::steady_clock::now();
-  const AFM::Mesh_return_code rc = mesher.refine_mesh();
+  AFM::Mesh_return_code rc;
+  try {
+    rc = mesher.refine_mesh();
+  } catch(const AFM::Checkpoint_error& e) {
+    // the outputs stay as they are: a resume from the previous checkpoint
+    // cuts them back to it
+    mesher.visitor().done();
+    std::cerr << program << ": error: " << e.what() << "; the outputs are incomplete";
+    if(mesher.statistics().checkpoints_written > 0)
+      std::cerr << "; afmesh_2 --resume " << opt.checkpoint_file << " goes on from the previous checkpoint";
+    std::cerr << "\n";
+    return 3;
+  }
   if(rc == AFM::TIME_LIMIT_REACHED || rc == AFM::ITERATION_LIMIT_REACHED)
     std::cerr << "afmesh_2: note: " << opt.input << ": "
               << (rc == AFM::TIME_LIMIT_REACHED ? "--time-limit" : "--max-steps")
@@ -461,6 +532,16 @@ int run(const Options& opt)
   return 0;
 }
 
+// An option taking exactly two values (K FILE): a multitoken option would
+// also take the input file given after them.
+class Two_tokens : public po::typed_value<std::vector<std::string> >
+{
+public:
+  explicit Two_tokens(std::vector<std::string>* store) : po::typed_value<std::vector<std::string> >(store) {}
+  unsigned min_tokens() const override { return 2; }
+  unsigned max_tokens() const override { return 2; }
+};
+
 void parse_checkpoint(const std::vector<std::string>& checkpoint, Options& opt)
 {
   long long every = 0;
@@ -474,9 +555,43 @@ void parse_checkpoint(const std::vector<std::string>& checkpoint, Options& opt)
   }
   if(checkpoint.size() != 2 || used != checkpoint[0].size() || every < 1 || checkpoint[1].empty())
     throw Usage_error("--checkpoint-every takes a positive number of triangles K and a FILE");
+  // Boost hands over the next option when FILE is missing
+  if(checkpoint[1][0] == '-')
+    throw Usage_error("--checkpoint-every takes a positive number of triangles K and a FILE, not '" + checkpoint[1] +
+                      "'");
   opt.checkpoint_every = std::size_t(every);
   opt.checkpoint_file = checkpoint[1];
   opt.stream = true;
+}
+
+// The options a checkpoint stores, '\0'-separated: file names made absolute
+// (a run may be resumed from another directory) and the checksums of the
+// input files (a resumed run must read the same ones).
+std::string stored_arguments(const po::parsed_options& parsed, const Options& opt, bool resuming)
+{
+  std::vector<std::string> out;
+  for(const po::option& o : parsed.options) {
+    if(o.string_key == "input") {
+      out.push_back(absolute_path(o.value.at(0)));
+      continue;
+    }
+    out.push_back("--" + o.string_key);
+    for(std::size_t i = 0; i < o.value.size(); ++i) {
+      const bool file = o.string_key == "sources" || o.string_key == "output" || o.string_key == "histogram" ||
+                        (o.string_key == "checkpoint-every" && i == 1);
+      out.push_back(file ? absolute_path(o.value[i]) : o.value[i]);
+    }
+  }
+  if(!resuming) { // a resumed run's stored options hold them already
+    out.insert(out.end(), {"--input-checksum", file_checksum(opt.input)});
+    if(!opt.sources.empty()) out.insert(out.end(), {"--sources-checksum", file_checksum(opt.sources)});
+  }
+  std::string joined;
+  for(const std::string& a : out) {
+    if(!joined.empty()) joined += '\0';
+    joined += a;
+  }
+  return joined;
 }
 
 Options parse(const std::vector<std::string>& args, bool resuming = false)
@@ -518,7 +633,7 @@ Options parse(const std::vector<std::string>& args, bool resuming = false)
     ("stream", po::bool_switch(&opt.stream),
      "write triangles to the outputs while meshing and drop them from memory, for meshes larger than "
      "memory (not with .svg outputs, --smooth or --histogram; no quality figures)")
-    ("checkpoint-every", po::value<std::vector<std::string> >(&checkpoint)->multitoken(),
+    ("checkpoint-every", new Two_tokens(&checkpoint),
      "K FILE: with --stream (implied), write the mesher's state to FILE after every K more triangles, "
      "so that --resume FILE can finish an interrupted run")
     ("stop-after-checkpoint", po::bool_switch(&opt.stop_after_checkpoint),
@@ -530,20 +645,29 @@ Options parse(const std::vector<std::string>& args, bool resuming = false)
     ("report", po::bool_switch(&opt.report),
      "print a readable quality summary (on stdout; on stderr with --stats)");
   po::options_description hidden;
-  hidden.add_options()("input", po::value<std::string>(&opt.input));
+  hidden.add_options()("input", po::value<std::string>(&opt.input))
+    // written into checkpoints only (see stored_arguments())
+    ("input-checksum", po::value<std::string>(&opt.input_checksum))
+    ("sources-checksum", po::value<std::string>(&opt.sources_checksum));
   po::options_description all;
   all.add(visible).add(hidden);
   po::positional_options_description pos;
   pos.add("input", 1);
   po::variables_map vm;
+  po::parsed_options parsed(&all);
   try {
-    po::store(po::command_line_parser(args).options(all).positional(pos).run(), vm);
+    parsed = po::command_line_parser(args).options(all).positional(pos).run();
+    po::store(parsed, vm);
     po::notify(vm);
   } catch(const po::error& e) {
     throw Usage_error(e.what());
   }
+  if(!resuming && (vm.count("input-checksum") || vm.count("sources-checksum")))
+    throw Usage_error("unrecognised option '--" + std::string(vm.count("input-checksum") ? "input" : "sources") +
+                      "-checksum'");
   if(vm.count("help")) {
-    std::cout << visible << "\nExit codes: 0 success, 1 invalid input, 2 bad usage, 3 internal error.\n";
+    std::cout << visible << "\nExit codes: 0 success, 1 invalid input, 2 bad usage, 3 an output or checkpoint that "
+                            "could not be written, or an internal error.\n";
     std::exit(EXIT_SUCCESS);
   }
   if(!opt.resume.empty()) {
@@ -592,7 +716,7 @@ Options parse(const std::vector<std::string>& args, bool resuming = false)
         }
         kept.push_back(stored_args[i]);
       }
-      kept.insert(kept.end(), {"--checkpoint-every", checkpoint[0], checkpoint[1]});
+      kept.insert(kept.end(), {"--checkpoint-every", checkpoint[0], absolute_path(checkpoint[1])});
       resumed.arguments.clear();
       for(const std::string& a : kept) {
         if(!resumed.arguments.empty()) resumed.arguments += '\0';
@@ -652,10 +776,7 @@ Options parse(const std::vector<std::string>& args, bool resuming = false)
     if(opt.smooth > 0) throw Usage_error("--stream cannot be combined with --smooth (smoothing needs the whole mesh)");
     if(!opt.histogram.empty()) throw Usage_error("--stream cannot be combined with --histogram");
   }
-  for(const std::string& a : args) {
-    if(!opt.arguments.empty()) opt.arguments += '\0';
-    opt.arguments += a;
-  }
+  if(opt.checkpoint_every > 0) opt.arguments = stored_arguments(parsed, opt, resuming);
   return opt;
 }
 

@@ -12,6 +12,7 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/Checkpoint_error.h>
 #include <CGAL/Advancing_front_mesh_2/Default_visitor.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_return_code.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
@@ -356,7 +357,10 @@ public:
   `refine_mesh()` (or `step_by_step_refine_mesh()`) meshes the rest; the
   triangles and vertices the sink receives, their numbers and their order
   are exactly those the interrupted run would have given after its
-  checkpoint. Limits and checkpoints are not restored: set them again.
+  checkpoint. The sweep interval and the pocket priority are restored from
+  the checkpoint (set after `resume()`, they apply from then on, and the
+  output differs from the uninterrupted run's); limits and checkpoints are
+  not restored: set them again.
 
   \throws std::logic_error if the triangulation is not empty or no sink is set
   \throws std::runtime_error "FILE: ..." if the file cannot be read, is
@@ -389,29 +393,44 @@ public:
     }
   }
 
-  /// Writes a checkpoint now (streaming mode, between steps); see `set_checkpoint()`.
+  /*!
+  Writes a checkpoint now (streaming mode, between steps); see `set_checkpoint()`.
+
+  \throws Advancing_front_mesh_2::Checkpoint_error if the file or the
+  sink's state cannot be written; nothing else changes then.
+  \throws std::logic_error without streaming mode, after the end, or when a
+  coordinate is not a double.
+  */
   void write_checkpoint(const std::string& file_name, const std::string& user_data = std::string())
   {
     if(sink_ == nullptr) throw std::logic_error("Advancing_front_mesher_2: checkpoints need streaming mode");
     if(!initialized_) init();
     if(finished_) throw std::logic_error("Advancing_front_mesher_2: the mesh is complete, there is nothing to checkpoint");
-    const std::string sink_state = sink_->checkpoint_state();
     const std::string tmp = file_name + ".tmp";
+    std::string sink_state;
+    try {
+      sink_state = sink_->checkpoint_state();
+    } catch(const std::exception& e) {
+      throw Advancing_front_mesh_2::Checkpoint_error(file_name + ": the output's state for the checkpoint: " +
+                                                     e.what());
+    }
     // counted in the state it writes: a resumed run counts on from there
     ++stats_.checkpoints_written;
     try {
       std::ofstream os(tmp.c_str(), std::ios::out | std::ios::binary | std::ios::trunc);
-      if(!os) throw std::runtime_error("cannot write " + tmp);
+      if(!os) throw Advancing_front_mesh_2::Checkpoint_error(tmp + ": cannot write the checkpoint");
       Advancing_front_mesh_2::internal::Binary_writer w(os);
       write_checkpoint_state(w, user_data, sink_state);
       w.write_checksum();
       os.flush();
-      if(!os) throw std::runtime_error("cannot write " + tmp);
+      if(!os) throw Advancing_front_mesh_2::Checkpoint_error(tmp + ": cannot write the checkpoint");
       os.close();
+      if(!os) throw Advancing_front_mesh_2::Checkpoint_error(tmp + ": cannot write the checkpoint");
       if(std::rename(tmp.c_str(), file_name.c_str()) != 0)
-        throw std::runtime_error("cannot rename " + tmp + " to " + file_name);
+        throw Advancing_front_mesh_2::Checkpoint_error(tmp + ": cannot rename it to " + file_name);
     } catch(...) {
       --stats_.checkpoints_written;
+      std::remove(tmp.c_str()); // a partial file would only mislead
       throw;
     }
   }
@@ -427,7 +446,10 @@ public:
   whole domain (see `Advancing_front_mesh_2::Mesh_return_code`).
 
   \throws std::invalid_argument if the sizing field returns a value that is
-  not a positive finite number.
+  not a positive finite number (the front is closed first, so the
+  triangulation is valid).
+  \throws Advancing_front_mesh_2::Checkpoint_error if a checkpoint cannot be
+  written: then nothing is closed, and calling `refine_mesh()` again goes on.
   */
   Advancing_front_mesh_2::Mesh_return_code refine_mesh()
   {
@@ -451,6 +473,12 @@ public:
       }
       try {
         if(!step()) break;
+      } catch(const Advancing_front_mesh_2::Checkpoint_error&) {
+        // the state is the one before the checkpoint: a caller may retry
+        enter_phase(FRONT_SELECTION);
+        store_phase_times();
+        stats_.meshing_time += seconds_since(start);
+        throw;
       } catch(...) {
         // leave a valid triangulation behind before reporting the error
         close_remaining_front();
@@ -525,6 +553,8 @@ public:
     stop_now_ = false; // a stop after a checkpoint concerns refine_mesh() only
     try {
       if(step()) return true;
+    } catch(const Advancing_front_mesh_2::Checkpoint_error&) {
+      throw; // the state is the one before the checkpoint
     } catch(...) {
       close_remaining_front();
       finish();
@@ -901,9 +931,10 @@ private:
     return circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2));
   }
 
-  double target_circumradius(double mx, double my)
+  // (`phase`: where the time of the sizing field goes)
+  double target_circumradius(double mx, double my, Phase phase_of_call = FRONT_SELECTION)
   {
-    Phase_scope phase(this, FRONT_SELECTION);
+    Phase_scope phase(this, phase_of_call);
     const Point m = to_user_point(mx, my);
     const FT h = sizing_(m);
     const double user_h = CGAL::to_double(h);
@@ -1196,9 +1227,8 @@ private:
           remove_front_edge(t, s);
         }
       } else if(sink_ != nullptr && g == ghost_) {
-        // beyond lies the outside, after a restart (a cavity next to a
-        // finished triangle is refused, see insert_point())
-        CGAL_assertion(ghost_apex_.count(std::make_pair(&*f->vertex(ccw(k)), &*f->vertex(cw(k)))) == 0);
+        // beyond lies the outside after a restart, or a finished triangle
+        // (then the cavity is put back, see insert_point())
         add_front_edge(s, t, ghost_, -1, constrained);
         if(created) created->push_back(key(s, t));
       } else {
@@ -1846,13 +1876,15 @@ private:
         }
       });
     }
+    // finished triangles (gone to the sink) next to the cavity, and those p breaks
     bool reaches_finished = false;
+    std::size_t finished_broken = 0;
     for(std::size_t i = 0; i < broken_.size(); ++i) {
       Face_handle f = broken_[i];
       for(int k = 0; k < 3; ++k) {
         Face_handle g = f->neighbor(k);
         if(sink_ != nullptr && g == ghost_) {
-          if(is_finished_face_beyond(f, k, p)) reaches_finished = true;
+          if(is_finished_face_beyond(f, k, p, finished_broken)) reaches_finished = true;
           continue;
         }
         if(f->is_constrained(k)) continue;
@@ -1865,17 +1897,6 @@ private:
         }
       }
     }
-    if(reaches_finished) {
-      // The cavity would open the mesh next to a triangle already given to
-      // the sink (or break it), which then could no longer follow: the point
-      // is refused, nothing has changed yet, and the edge is closed on an
-      // existing point instead, as for any refused point. The mesh stays a
-      // constrained Delaunay triangulation; it differs from the run without
-      // streaming here, which the statistics count.
-      ++stats_.points_refused_for_finished_triangles;
-      return false;
-    }
-
     // step 10: the size bound grows to the largest broken circle
     const Circle cp = circle_of(x(a), y(a), x(b), y(b), px, py);
     double rho_new = (std::max)(rho, cp.r);
@@ -1907,9 +1928,25 @@ private:
     const bool no_cavity = broken_.empty();
     if(!no_cavity || length(px - nbh_.cx, py - nbh_.cy) + star_radius > nbh_.radius)
       gather(px, py, star_radius, nbh_);
-    if(!is_acceptable_point(a, b, p, px, py, d)) {
+    // A point the run without streaming rejects is rejected here too, for
+    // the same reasons, before reaching a finished triangle is held against
+    // it.
+    const bool acceptable = is_acceptable_point(a, b, p, px, py, d);
+    if(!acceptable || reaches_finished) {
       for(const std::array<Vid, 3>& t : removed_) make_triangle(t[0], t[1], t[2]);
       stats_.triangles_removed -= removed_.size();
+      if(acceptable) {
+        // The cavity would break a triangle already given to the sink, or
+        // leave its edge on the front, where the run without streaming
+        // would put its circle back in the octree for later points to
+        // break: the sink could follow neither. The point is refused, and
+        // the edge is closed on an existing point instead, as for any
+        // refused point. The mesh stays a constrained Delaunay
+        // triangulation; it differs from the run without streaming here,
+        // which the statistics count.
+        ++stats_.points_refused_for_finished_triangles;
+        stats_.finished_triangles_broken += finished_broken;
+      }
       return false;
     }
 
@@ -2052,15 +2089,21 @@ private:
   }
 
   // ---------------------------------------------------------- streaming
-  // A triangle can only be broken by a point inside its circle, and points
-  // are only placed in the unmeshed region; the region grows back only by
-  // the cavities of new points, which lie at the front. A triangle whose
-  // circle, enlarged by `finished_margin`, meets no front edge and holds no
-  // free point, and whose neighbours' circles are as clear, is taken for
-  // finished (see sweep_finished_faces()). The margin covers the cavities
-  // that open the mesh a little behind the front; a point whose cavity
-  // reaches a finished triangle all the same is refused (insert_point()).
+  // A triangle can only be broken by a point inside its circle. Points are
+  // placed ahead of the front, but a point's cavity may remove the front
+  // triangles behind a thin unmeshed gap, and the point then lands where
+  // the mesh was: up to about the placement distance (at most twice the
+  // target circumradius) behind the front. A triangle is taken for
+  // finished (see sweep_finished_faces()) when the disk about its
+  // circumcentre of radius `finished_margin` times its circumradius plus
+  // `placement_margin` times the target circumradius at its centroid meets
+  // no front edge and holds no free point, and its neighbours' disks are as
+  // clear. (With the first term alone, a 100M-triangle run had 2 points
+  // inside finished triangles' circles, both placed past a thin gap.) A
+  // point whose cavity reaches a finished triangle all the same is refused
+  // (insert_point()).
   static constexpr double finished_margin = 2.0;
+  static constexpr double placement_margin = 2.0;
 
   // Is any front edge or active vertex within `radius` of (cx, cy)?
   bool front_meets_disk(double cx, double cy, double radius) const
@@ -2082,26 +2125,32 @@ private:
     return meets;
   }
 
-  bool is_clear_of_front(Face_handle f) const
+  bool is_clear_of_front(Face_handle f)
   {
     if(face_records_.find(&*f) != nullptr) return false; // a front triangle
     const Circle c = circle_of(f);
     if(!(std::isfinite(c.cx) && std::isfinite(c.cy) && std::isfinite(c.r))) return false;
-    return !front_meets_disk(c.cx, c.cy, finished_margin * c.r);
+    // at the centroid, which lies in the domain (the circumcentre may not)
+    double gx = 0, gy = 0;
+    for(int i = 0; i < 3; ++i) {
+      gx += ix(f->vertex(i)->point()) / 3;
+      gy += iy(f->vertex(i)->point()) / 3;
+    }
+    return !front_meets_disk(c.cx, c.cy, finished_margin * c.r + placement_margin * target_circumradius(gx, gy, OUTPUT));
   }
 
   // Is a finished face beyond edge k of f, a face of p's cavity? (Not the
-  // outside, which stands behind the ghost after a restart.) Counts it when
-  // the mesher without streaming would have broken it: its circle holds p
-  // and the walk would have crossed the edge.
-  bool is_finished_face_beyond(Face_handle f, int k, const Point& p)
+  // outside, which stands behind the ghost after a restart.) Counts in
+  // `broken` the finished faces the mesher without streaming would have
+  // broken: their circle holds p and the walk would cross the edge.
+  bool is_finished_face_beyond(Face_handle f, int k, const Point& p, std::size_t& broken)
   {
     const Vertex_handle s = f->vertex(ccw(k)), t = f->vertex(cw(k));
     const auto it = ghost_apex_.find(std::make_pair(&*s, &*t));
     if(it == ghost_apex_.end()) return false;
     if(!f->is_constrained(k)) {
       ++stats_.incircle_tests;
-      if(pred_.strictly_inside_circle(t->point(), s->point(), it->second, p)) ++stats_.finished_triangles_broken;
+      if(pred_.strictly_inside_circle(t->point(), s->point(), it->second, p)) ++broken;
     }
     return true;
   }
@@ -2429,6 +2478,7 @@ private:
     vertices.reserve(std::size_t((std::min)(nv, std::uint64_t(1) << 20)));
     for(std::uint64_t i = 0; i < nv; ++i) {
       const double px = r.read<double>(), py = r.read<double>();
+      check(std::isfinite(px) && std::isfinite(py), "vertex coordinates");
       const std::uint64_t out = r.read<std::uint64_t>();
       const bool created = r.read<std::uint8_t>() != 0;
       Vertex_handle v = tds().create_vertex();
@@ -2465,8 +2515,18 @@ private:
     }
     r.read_vector(free_ids_, nids);
     r.read_vector(released_ids_, nids);
-    for(Vid v : free_ids_) check(v < nids && is_free[v], "free vertex id");
-    for(Vid v : released_ids_) check(v < nids && is_free[v], "released vertex id");
+    // every id without a vertex is free or released, once
+    std::vector<bool> listed(is_free.size(), false);
+    for(Vid v : free_ids_) {
+      check(v < nids && is_free[v] && !listed[v], "free vertex id");
+      listed[v] = true;
+    }
+    for(Vid v : released_ids_) {
+      check(v < nids && is_free[v] && !listed[v], "released vertex id");
+      listed[v] = true;
+    }
+    check(std::count(is_free.begin(), is_free.end(), true) == std::ptrdiff_t(free_ids_.size() + released_ids_.size()),
+          "free vertex ids");
 
     ghost_ = tds().create_face();
     ghost_->set_in_domain(false);
@@ -2477,6 +2537,7 @@ private:
     for(std::uint64_t i = 0; i < nf; ++i) {
       std::array<std::uint32_t, 3> vs;
       for(int k = 0; k < 3; ++k) vs[k] = r.read<std::uint32_t>();
+      check(vs[0] != vs[1] && vs[1] != vs[2] && vs[2] != vs[0], "face vertices");
       Face_handle f = tds().create_face(vertex_at(vs[0]), vertex_at(vs[1]), vertex_at(vs[2]));
       f->set_in_domain(true);
       faces.push_back(f);
@@ -2492,6 +2553,7 @@ private:
         Face_record rec;
         rec.circle_item = std::size_t(r.read<std::uint64_t>());
         rec.front_edges = r.read<int>();
+        check(rec.front_edges > 0 && rec.front_edges <= 3, "face record");
         face_records_.insert(&*f, rec);
       }
     }
@@ -2503,17 +2565,29 @@ private:
     };
     for(std::size_t i = 0; i < faces.size(); ++i)
       for(int k = 0; k < 3; ++k) faces[i]->set_neighbor(k, face_at(neighbours[i][k]));
+    // two faces in memory see each other across the same edge
+    for(Face_handle f : faces)
+      for(int k = 0; k < 3; ++k) {
+        Face_handle g = f->neighbor(k);
+        if(g == Face_handle() || g == ghost_) continue;
+        int j = 0;
+        while(j < 3 && g->neighbor(j) != f) ++j;
+        check(j < 3 && g->vertex(cw(j)) == f->vertex(ccw(k)) && g->vertex(ccw(j)) == f->vertex(cw(k)) &&
+                g->is_constrained(j) == f->is_constrained(k), "face neighbours");
+      }
 
     const std::uint64_t ne = r.read<std::uint64_t>();
     check(ne < big, "front size");
     for(std::uint64_t i = 0; i < ne; ++i) {
       const Edge_key k = r.read<Edge_key>();
-      check(source(k) < nids && target(k) < nids, "front edge key");
+      check(source(k) < nids && target(k) < nids && source(k) != target(k), "front edge key");
       Front_edge fe;
       fe.behind = face_at(r.read<std::uint32_t>());
       fe.behind_index = r.read<int>();
       check(fe.behind_index >= -1 && fe.behind_index < 3, "front edge");
       if(fe.behind == ghost_) fe.behind_index = -1;
+      check(fe.behind == Face_handle() || fe.behind == ghost_ || fe.behind_index >= 0, "front edge");
+      check(front_.find(k) == nullptr, "front edge twice");
       fe.constrained = r.read<std::uint8_t>() != 0;
       fe.level = r.read<std::uint16_t>();
       fe.version = r.read<std::uint32_t>();
@@ -2528,6 +2602,7 @@ private:
       const Edge_key k = r.read<Edge_key>();
       const std::uint32_t version = r.read<std::uint32_t>();
       const std::uint16_t level = r.read<std::uint16_t>();
+      check(source(k) < nids && target(k) < nids, "queue entry");
       entries.push_back(Queue_entry{length, k, version, level});
     }
     queue_ = std::priority_queue<Queue_entry>(std::less<Queue_entry>(), std::move(entries));
@@ -2537,6 +2612,7 @@ private:
     constraint_octree_.load(r, [&](Binary_reader& br) {
       const std::uint32_t a = br.read<std::uint32_t>();
       const std::uint32_t b = br.read<std::uint32_t>();
+      check(a != b, "constraint");
       return std::make_pair(vertex_at(a), vertex_at(b));
     });
 
@@ -2552,9 +2628,28 @@ private:
     for(Vid v = 0; v < nids; ++v)
       if(!is_free[v]) check(index_.contains(v), "point quadtree");
     front_.for_each([&](Edge_key k, const Front_edge&) { check(!is_free[source(k)] && !is_free[target(k)], "front edge"); });
-    face_records_.for_each([&](const Tds_face*, const Face_record& rec) {
-      check(triangle_octree_.is_alive(rec.circle_item), "circle octree");
+    check(index_.size() == vid_.size(), "point quadtree");
+    // the circle octree holds exactly the circles of the face records, and a
+    // record counts the front edges its face is behind
+    std::size_t circles = 0;
+    bool circles_ok = true;
+    triangle_octree_.for_each_payload([&](const Face_handle& f) {
+      ++circles;
+      if(f == Face_handle() || f == ghost_ || face_records_.find(&*f) == nullptr) circles_ok = false;
     });
+    check(circles_ok && circles == face_records_.size(), "circle octree");
+    std::unordered_map<const Tds_face*, int> edges_behind;
+    front_.for_each([&](Edge_key, const Front_edge& fe) {
+      if(fe.behind != Face_handle() && fe.behind != ghost_) ++edges_behind[&*fe.behind];
+    });
+    check(edges_behind.size() == face_records_.size(), "face records");
+    face_records_.for_each([&](const Tds_face* f, const Face_record& rec) {
+      check(triangle_octree_.is_alive(rec.circle_item) && &*triangle_octree_.payload(rec.circle_item) == f,
+            "circle octree");
+      const auto it = edges_behind.find(f);
+      check(it != edges_behind.end() && it->second == rec.front_edges, "face records");
+    });
+    check(is_front_valid(), "front");
   }
 
   void finish_stream()

@@ -122,11 +122,11 @@ struct Statistics
   std::size_t largest_triangles_in_memory = 0;
   /// A finished triangle has gone to the sink: its circle was far enough
   /// behind the front that no later point was expected to reach it. New
-  /// points whose cavity reached one all the same are refused (the edge is
-  /// closed on an existing point instead), so that the mesh stays a
-  /// constrained Delaunay triangulation: this counts them. 0 in every test
-  /// and benchmark; with it at 0 the triangles are exactly those of the run
-  /// without streaming.
+  /// points whose cavity reached one all the same, and which would
+  /// otherwise have been accepted, are refused (the edge is closed on an
+  /// existing point instead), so that the mesh stays a constrained Delaunay
+  /// triangulation: this counts them. 0 in every test and benchmark; with
+  /// it at 0 the triangles are exactly those of the run without streaming.
   std::size_t points_refused_for_finished_triangles = 0;
   /// of those, the points inside the circle of the finished triangle (the
   /// run without streaming would have broken it)
