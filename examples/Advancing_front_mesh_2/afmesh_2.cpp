@@ -112,13 +112,12 @@ std::string file_checksum(const std::string& name)
 {
   std::ifstream is(name.c_str(), std::ios::in | std::ios::binary);
   if(!is) return std::string();
-  std::uint64_t h = 14695981039346656037ull;
+  // the hash the checkpoints themselves are checked with
+  namespace AFMI = CGAL::Advancing_front_mesh_2::internal;
+  std::uint64_t h = AFMI::fnv1a_offset_basis;
   char buffer[1 << 16];
   while(is.read(buffer, sizeof buffer) || is.gcount() > 0) {
-    for(std::streamsize i = 0; i < is.gcount(); ++i) {
-      h ^= std::uint64_t(static_cast<unsigned char>(buffer[i]));
-      h *= 1099511628211ull;
-    }
+    h = AFMI::fnv1a_update(h, buffer, std::size_t(is.gcount()));
     if(!is) break;
   }
   std::ostringstream os;
