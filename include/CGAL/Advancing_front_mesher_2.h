@@ -360,7 +360,10 @@ public:
   checkpoint. The sweep interval and the pocket priority are restored from
   the checkpoint (set after `resume()`, they apply from then on, and the
   output differs from the uninterrupted run's); limits and checkpoints are
-  not restored: set them again.
+  not restored: set them again. The statistics' counters go on from the
+  checkpoint's; their times (`init_time`, `meshing_time`, `phase_times`)
+  are those of the resumed run alone, so that a checkpoint does not depend
+  on how fast it was made: two runs write the same bytes.
 
   \throws std::logic_error if the triangulation is not empty or no sink is set
   \throws std::runtime_error "FILE: ..." if the file cannot be read, is
@@ -2382,7 +2385,13 @@ private:
     w.write(version_counter_);
     w.write(std::uint64_t(queue_compactions_));
     w.write(static_cast<std::uint8_t>(pocket_priority_));
-    w.write(stats_);
+    // the counters without the times, which are this session's: a
+    // checkpoint depends on the input and the options only, and two runs
+    // write the same bytes
+    Advancing_front_mesh_2::Statistics counters = stats_;
+    counters.init_time = counters.meshing_time = 0;
+    counters.phase_times = Advancing_front_mesh_2::Phase_times();
+    w.write(counters);
     for(std::size_t n : {triangles_in_memory_, created_since_sweep_, sweep_after_, minimum_sweep_})
       w.write(std::uint64_t(n));
 
@@ -2445,10 +2454,17 @@ private:
       bw.write(vertex_code(c.second));
     });
 
-    w.write(std::uint64_t(ghost_apex_.size()));
-    for(const auto& g : ghost_apex_) {
-      w.write(vindex.at(g.first.first));
-      w.write(vindex.at(g.first.second));
+    // in the order of the vertices' numbers, not the hash table's, which
+    // depends on addresses
+    std::vector<std::pair<std::array<std::uint32_t, 2>, Point> > ghosts;
+    ghosts.reserve(ghost_apex_.size());
+    for(const auto& g : ghost_apex_)
+      ghosts.emplace_back(std::array<std::uint32_t, 2>{{vindex.at(g.first.first), vindex.at(g.first.second)}}, g.second);
+    std::sort(ghosts.begin(), ghosts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    w.write(std::uint64_t(ghosts.size()));
+    for(const auto& g : ghosts) {
+      w.write(g.first[0]);
+      w.write(g.first[1]);
       w.write(exact_double(g.second.x()));
       w.write(exact_double(g.second.y()));
     }

@@ -316,6 +316,20 @@ std::string stopped_checkpoint(const std::string& file, double h, std::size_t sw
 
 } // namespace
 
+// A checkpoint depends on the input and the options only (no times): the
+// same run writes the same bytes, which is what lets a refactoring be
+// proven a pure move by comparing checkpoints.
+AFM_TEST_CASE(test_streaming_checkpoint_is_deterministic)
+{
+  const std::string file = (scratch_directory() / "deterministic.checkpoint").string();
+  const std::string first = stopped_checkpoint(file, 0.01, 256, 4000);
+  const std::string second = stopped_checkpoint(file, 0.01, 256, 4000);
+  AFM_CHECK(first.size() > 1000);
+  AFM_CHECK_MSG(first == second, "two runs wrote different checkpoints (" << first.size() << " and "
+                                                                            << second.size() << " bytes)");
+  std::filesystem::remove(file);
+}
+
 AFM_TEST_CASE(test_streaming_checkpoint_errors)
 {
   typedef afm_test::Types<Epick>::CDT CDT;
