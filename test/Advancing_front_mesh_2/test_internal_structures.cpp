@@ -372,7 +372,7 @@ AFM_TEST_CASE(test_internal_memory_release)
       old_id.push_back(i);
     }
   const std::size_t nodes_before = points.number_of_nodes();
-  points.rebuild(new_id);
+  points.renumber(new_id);
   AFM_CHECK(points.size() == old_id.size());
   AFM_CHECK_MSG(points.number_of_nodes() < nodes_before, points.number_of_nodes() << " nodes, " << nodes_before << " before");
   for(std::size_t w = 0; w < old_id.size(); ++w) {
@@ -850,8 +850,8 @@ AFM_TEST_CASE(test_internal_point_quadtree_save_load)
       // renamed in random order
       std::iota(new_id.begin(), new_id.end(), std::size_t(0));
       std::shuffle(new_id.begin(), new_id.end(), rng);
-      a.rebuild(new_id);
-      b.rebuild(new_id);
+      a.renumber(new_id);
+      b.renumber(new_id);
     }
     if(s == 15000) load_bytes(b, saved_bytes(a)); // a second checkpoint, into a tree in use
     point_quadtree_step(rng, xy, a, b);
@@ -1207,7 +1207,7 @@ AFM_TEST_CASE(test_internal_binary_io)
       }
     }
     struct Swap_pairs { std::size_t operator[](std::size_t i) const { return i ^ 1; } };
-    t.rebuild(Swap_pairs());
+    t.renumber(Swap_pairs());
     for(std::size_t i = 0; i < 80; ++i) t.remove(i);
     AFM_CHECK(t.size() == 0);
   }

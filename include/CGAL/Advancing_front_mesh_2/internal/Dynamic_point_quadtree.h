@@ -143,7 +143,7 @@ public:
   /// in memory proportional to their number: the node and id arrays
   /// otherwise keep the size of the largest front.
   template <class Id_map>
-  void rebuild(const Id_map& new_id)
+  void renumber(const Id_map& new_id)
   {
     std::vector<Entry> all(overflow_);
     all.reserve(size_);

@@ -59,11 +59,18 @@ namespace internal {
 // their block of nodes is reused by the next split, which keeps the tree's
 // size proportional to the circles it holds (the front), not to the region
 // swept (without it, the nodes were 28 bytes per triangle of the mesh).
-template <class Payload>
+template <class Payload_ = std::size_t>
 class Lifted_circle_octree
 {
 public:
+  typedef Payload_ Payload;
   typedef std::size_t Item_id;
+  /// the same tree for other payloads (the mesher holds two)
+  template <class P>
+  struct Rebind_payload
+  {
+    typedef Lifted_circle_octree<P> Other;
+  };
   static constexpr Item_id null_item = (std::numeric_limits<Item_id>::max)();
 
 private:

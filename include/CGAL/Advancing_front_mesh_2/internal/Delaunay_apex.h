@@ -1,0 +1,206 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_DELAUNAY_APEX_H
+#define CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_DELAUNAY_APEX_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_visibility.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Neighbourhood.h>
+
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace internal {
+
+// Step 5 of Mavriplis (1992), Merriam's iteration: the Delaunay apex of a
+// front edge among the neighbourhood's vertices visible from both its end
+// points, i.e. the candidate whose circle through the edge contains no
+// other candidate.
+template <class Front, class Visibility>
+class Delaunay_apex
+{
+public:
+  typedef typename Front::Context Context;
+  typedef typename Front::Vid Vid;
+  typedef typename Front::Point Point;
+  typedef typename Context::Phase_scope Phase_scope;
+  typedef internal::Neighbourhood<Front> Neighbourhood;
+  static constexpr Vid no_vertex = Front::no_vertex;
+
+  Delaunay_apex(Context& ctx, const Front& front, const Visibility& visibility)
+    : ctx_(ctx), front_(front), visibility_(visibility) {}
+
+  Vid operator()(Vid a, Vid b, const Neighbourhood& n,
+                 double max_centre_height = std::numeric_limits<double>::infinity());
+
+private:
+  enum Candidate_state : unsigned char { UNTESTED, QUALIFIES, REJECTED };
+  struct Candidate
+  {
+    double height;         // approximate circle-centre height, for the order
+    Vid vertex;
+    Candidate_state state;
+    double low;            // a lower bound of the true height
+  };
+
+  void collect_candidates(Vid a, Vid b, const Neighbourhood& n, double max_centre_height);
+  Vid merriam_iteration(Vid a, Vid b, const Neighbourhood& n);
+
+  Context& ctx_;
+  const Front& front_;
+  const Visibility& visibility_;
+  std::vector<Candidate> candidates_, dropped_; // scratch space reused across steps
+};
+
+// The Delaunay apex of front edge a -> b, or no_vertex.
+//
+// When the caller has no use for an apex whose circle's centre lies at
+// `max_centre_height` or more above the edge (such a triangle is too large
+// to be built, and the new point would lie inside its circle), the
+// candidates surely beyond that height are dropped before their costly
+// tests; since they lie outside the circles of all lower candidates, the
+// answer among the others is unchanged, and no_vertex means "no apex
+// below".
+template <class Front, class Visibility>
+typename Front::Vid Delaunay_apex<Front, Visibility>::operator()(Vid a, Vid b, const Neighbourhood& n,
+                                                                 double max_centre_height)
+{
+  Phase_scope phase(ctx_.timer, DELAUNAY_CLOSURE);
+  collect_candidates(a, b, n, max_centre_height);
+  return merriam_iteration(a, b, n);
+}
+
+// Candidates are taken in the order of their circles' approximate centre
+// heights over the edge: the Delaunay apex is then nearly always the first
+// candidate that qualifies, so the costly free-sector tests run for few
+// candidates. The exact in-circle iteration decides; the order only saves
+// work.
+template <class Front, class Visibility>
+void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Neighbourhood& n,
+                                                          double max_centre_height)
+{
+  const Point& pa = front_.point(a);
+  const Point& pb = front_.point(b);
+  const double xa = front_.x(a), ya = front_.y(a), xb = front_.x(b), yb = front_.y(b);
+  const double mx = 0.5 * (xa + xb), my = 0.5 * (ya + yb);
+  const double tx = xb - xa, ty = yb - ya;
+  const double quarter_l2 = 0.25 * (tx * tx + ty * ty);
+  // heights below are centre heights in units of half the edge length
+  const double half_length = std::sqrt(quarter_l2);
+  // With other number types than double, the stored coordinates are only
+  // approximations (to_double of a lazy number may be off by 1e-5), so no
+  // candidate is dropped on their account.
+  const double cutoff = Context::double_coordinates ? max_centre_height / half_length
+                                                    : std::numeric_limits<double>::infinity();
+  candidates_.clear();
+  dropped_.clear();
+  // Error bounds of the double computation below (a few units in the last
+  // place of every term, generously): each candidate's true height lies in
+  // [low, high]. A candidate is dropped only if its low bound is above the
+  // cut-off; if a kept one may lie above it (its high bound is), the
+  // dropped ones it might not exclude are taken back, so the answer among
+  // the kept candidates is the answer among all.
+  const double eps = 1e-15;
+  const double e_t = eps * (std::abs(xa) + std::abs(ya) + std::abs(xb) + std::abs(yb));
+  double straddle = -std::numeric_limits<double>::infinity();
+  for(std::size_t z : n.vertices) {
+    const Vid c = Vid(z);
+    if(c == a || c == b) continue;
+    const double xc = front_.x(c), yc = front_.y(c);
+    // Points in line with an axis-parallel edge (boundary points on the
+    // sides of a box) are exactly collinear, where the filtered predicate
+    // falls back to exact arithmetic: with double coordinates, equal
+    // coordinates decide it at once.
+    if(Context::double_coordinates && ((ya == yb && yc == ya) || (xa == xb && xc == xa))) continue;
+    if(ctx_.pred.orientation(pa, pb, front_.point(c)) != LEFT_TURN) continue;
+    // with half the edge's length as unit: the circle through a, b and c
+    // has its centre at height num / v over the midpoint
+    const double dx = xc - mx, dy = yc - my;
+    const double u = dx * tx + dy * ty, v = dy * tx - dx * ty;
+    const double along2 = u * u / (4 * quarter_l2), across2 = v * v / (4 * quarter_l2);
+    const double num = along2 + across2 - quarter_l2;
+    const double e_d = eps * (std::abs(xc) + std::abs(yc) + std::abs(mx) + std::abs(my));
+    const double e_uv = e_d * (std::abs(tx) + std::abs(ty)) + e_t * (std::abs(dx) + std::abs(dy)) +
+                        eps * (std::abs(dx * tx) + std::abs(dy * ty) + std::abs(dy * tx) + std::abs(dx * ty));
+    const double e_num = (2 * (std::abs(u) + std::abs(v)) * e_uv + e_uv * e_uv) / (4 * quarter_l2) +
+                         eps * (along2 + across2 + quarter_l2) + 4 * eps * quarter_l2;
+    const double height = v > 0 ? num / v : 0;
+    const double low = (v + e_uv > 0 && num - e_num > 0) ? (num - e_num) / (v + e_uv)
+                                                        : -std::numeric_limits<double>::infinity();
+    const double high = (v - e_uv > 0) ? (num + e_num) / (v - e_uv) : std::numeric_limits<double>::infinity();
+    const Candidate cand{std::isfinite(height) ? height : 0., c, UNTESTED, low};
+    if(low > cutoff && std::isfinite(low)) {
+      dropped_.push_back(cand);
+    } else {
+      candidates_.push_back(cand);
+      if(!(high <= cutoff))
+        straddle = (std::max)(straddle, std::isnan(high) ? std::numeric_limits<double>::infinity() : high);
+    }
+  }
+  if(straddle > cutoff)
+    for(const Candidate& d : dropped_)
+      if(!(d.low > straddle)) candidates_.push_back(d);
+  std::sort(candidates_.begin(), candidates_.end(),
+            [](const Candidate& p, const Candidate& q) { return p.height < q.height; });
+}
+
+// Merriam's iteration over the qualifying candidates: the one whose circle
+// through a and b holds no other; then the winner must be visible from a
+// and b through the unmeshed region, or the next round runs without it.
+template <class Front, class Visibility>
+typename Front::Vid Delaunay_apex<Front, Visibility>::merriam_iteration(Vid a, Vid b, const Neighbourhood& n)
+{
+  const Point& pa = front_.point(a);
+  const Point& pb = front_.point(b);
+  auto qualifies = [&](Candidate& cand) {
+    if(cand.state == UNTESTED) {
+      const Vid c = cand.vertex;
+      const Point& pc = front_.point(c);
+      const bool ok = visibility_.in_free_sector(a, pc, c) && visibility_.in_free_sector(b, pc, c) &&
+                      visibility_.in_free_sector(c, pa, a) && visibility_.in_free_sector(c, pb, b);
+      cand.state = ok ? QUALIFIES : REJECTED;
+    }
+    return cand.state == QUALIFIES;
+  };
+  for(;;) {
+    std::size_t best = candidates_.size();
+    for(std::size_t i = 0; i < candidates_.size(); ++i) {
+      Candidate& cand = candidates_[i];
+      if(cand.state == REJECTED) continue;
+      if(best == candidates_.size()) {
+        if(qualifies(cand)) best = i;
+        continue;
+      }
+      ++ctx_.stats.incircle_tests;
+      if(ctx_.pred.strictly_inside_circle(pa, pb, front_.point(candidates_[best].vertex), front_.point(cand.vertex)) &&
+         qualifies(cand))
+        best = i;
+    }
+    if(best == candidates_.size()) return no_vertex;
+    const Vid c = candidates_[best].vertex;
+    // the winner qualified: its four free-sector tests are done
+    if(visibility_.visible_from_both(a, pa, b, pb, c, front_.point(c), n, true)) return c;
+    candidates_[best].state = REJECTED;
+  }
+}
+
+} // namespace internal
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_DELAUNAY_APEX_H

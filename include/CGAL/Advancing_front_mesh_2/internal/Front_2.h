@@ -1,0 +1,495 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_FRONT_2_H
+#define CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_FRONT_2_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Double_geometry.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Refinement_context.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace internal {
+
+// The state of the advancing front (steps 1-2 of Mavriplis 1992): the
+// records of the active vertices, the front edges, the queue that orders
+// them, and the front triangles with their circles in the circle index
+// (step 7 searches it). Everything else of the mesher reads and edits the
+// front through this class.
+//
+// `PointIndex` models AdvancingFrontPointIndex_2 (the close points of step
+// 4), `FaceCircleIndex` models AdvancingFrontCircleIndex_2 with face
+// handles as payloads.
+template <class Context_, class PointIndex, class FaceCircleIndex>
+class Front_2
+{
+public:
+  typedef Context_ Context;
+  typedef typename Context::Point Point;
+  typedef typename Context::Vertex_handle Vertex_handle;
+  typedef typename Context::Face_handle Face_handle;
+  typedef typename Context::Tds_vertex Tds_vertex;
+  typedef typename Context::Tds_face Tds_face;
+  typedef typename Context::Phase_scope Phase_scope;
+  typedef PointIndex Point_index;
+  typedef FaceCircleIndex Face_circle_index;
+
+  // Vertex ids name the active vertices; an edge key is (source, target).
+  typedef std::uint32_t Vid;
+  typedef std::uint64_t Edge_key;
+  static constexpr Vid no_vertex = (std::numeric_limits<Vid>::max)();
+
+  static Edge_key key(Vid u, Vid v) { return (Edge_key(u) << 32) | Edge_key(v); }
+  static Vid source(Edge_key k) { return Vid(k >> 32); }
+  static Vid target(Edge_key k) { return Vid(k & 0xffffffffu); }
+
+  // A front edge is directed with the unmeshed region on its left.
+  struct Front_edge
+  {
+    Face_handle behind;  // face on the meshed side (mesh or outside face), null on a virgin side of a constraint
+    int behind_index = -1;
+    bool constrained = false;
+    std::uint16_t level = 0; // pockets within pockets: see Pockets.h
+    std::uint32_t version = 0;
+  };
+
+  // A front triangle: its item in the circle index and the number of front
+  // edges it is behind.
+  struct Face_record
+  {
+    std::size_t circle_item;
+    int front_edges;
+  };
+
+  struct Queue_entry
+  {
+    Queue_entry(double len, Edge_key k, std::uint32_t v, std::uint16_t l)
+      : length(len), key(k), version(v), level(l) {}
+    double length;
+    Edge_key key;
+    std::uint32_t version;
+    std::uint16_t level;
+    bool operator<(const Queue_entry& o) const
+    {
+      // std::priority_queue is a max-heap: invert to pop the shortest edge,
+      // the edges of the innermost pockets first; ties broken by age
+      // (versions grow with creation, and when an edge is found on a
+      // pocket), which does not depend on the reuse of vertex ids, so that
+      // runs are deterministic
+      if(level != o.level) return level < o.level;
+      if(length != o.length) return length > o.length;
+      return version > o.version;
+    }
+  };
+
+  explicit Front_2(Context& ctx) : ctx_(ctx) {}
+
+  void clear();
+
+  // ---------------------------------------------------------- vertices
+  const Point& point(Vid v) const { return vertex[v]->point(); }
+  double x(Vid v) const { return xy[v][0]; }
+  double y(Vid v) const { return xy[v][1]; }
+  bool is_on_front(Vid v) const { return !out[v].empty() || !in[v].empty(); }
+  const Vid* id_of(Vertex_handle vh) const { return ids.find(&*vh); }
+  std::size_t number_of_active_vertices() const { return ids.size(); }
+
+  Vid activate(Vertex_handle vh);
+  void release_record(Vid v);
+  void reuse_released_ids();
+
+  // ------------------------------------------------------------- edges
+  std::size_t size() const { return edges.size(); }
+  bool empty() const { return edges.empty(); }
+  bool contains(Edge_key k) const { return edges.contains(k); }
+  const Front_edge* find(Edge_key k) const { return edges.find(k); }
+  Front_edge* find(Edge_key k) { return edges.find(k); }
+  double edge_length(Vid u, Vid v) const { return length(x(v) - x(u), y(v) - y(u)); }
+  bool is_front_segment(Vid u, Vid v) const;
+
+  void add_edge(Vid u, Vid v, Face_handle behind, int behind_index, bool constrained, Vid apex = no_vertex);
+  void remove_edge(Vid u, Vid v);
+  void push(Edge_key k, const Front_edge& fe) { queue.push(Queue_entry{edge_length(source(k), target(k)), k, fe.version, fe.level}); }
+  void compact_queue();
+
+  // ---------------------------------------------------- front triangles
+  void count_edge_behind(Face_handle f, Vid a = no_vertex, Vid b = no_vertex, Vid c = no_vertex);
+  void uncount_edge_behind(Face_handle f);
+  bool is_front_triangle(Face_handle f) const { return face_records.find(&*f) != nullptr; }
+
+  // ------------------------------------------------------------- memory
+  void release_unused_memory();
+  bool is_valid(Face_handle ghost) const;
+
+  // The changes since the neighbourhood was gathered (Neighbourhood.h)
+  // and in this step (Pockets.h).
+  void start_change_log()
+  {
+    created_since_gather.clear();
+    removed_since_gather.clear();
+  }
+
+private:
+  void update_reach(Vid u);
+  void compact_vertex_ids();
+
+  Context& ctx_;
+
+public:
+  // Only the active vertices have a record: an id, their coordinates, their
+  // front edges and a place in the point index. A vertex is active while it
+  // has front edges, or while no triangle touches it (a free point, or a
+  // vertex whose triangles were all removed by a cavity). Behind the front a
+  // vertex needs nothing, so its record is released and its id reused: the
+  // records and the lookup of ids by vertex hold O(front) memory instead of
+  // O(mesh), which was 60 bytes per triangle at 1M triangles.
+  //
+  // No triangle count is needed to tell the two kinds of vertices without
+  // front edges apart: a vertex that loses its last front edge to a new
+  // triangle belongs to that triangle (behind the front), and one that loses
+  // it to a removed triangle keeps no triangle at all (a removed triangle's
+  // edges at a vertex either become front edges, when a triangle lies beyond
+  // them, or vanish, when the vertex's fan was that triangle alone).
+  std::vector<Vertex_handle> vertex;
+  std::vector<std::array<double, 2> > xy; // internal coordinates
+  std::vector<Compact_id_list> out, in;   // targets of outgoing, sources of incoming front edges
+  Flat_hash_map<const Tds_vertex*, Vid> ids{nullptr};
+  std::vector<Vid> free_ids, released_ids;
+  Point_index active_points; // the close-point search of step 4
+
+  // keyed by (source, target); the empty key is no real edge
+  Flat_hash_map<Edge_key, Front_edge> edges{~Edge_key(0)};
+  std::priority_queue<Queue_entry> queue;
+  std::uint32_t version_counter = 0;
+  std::size_t queue_compactions = 0;
+
+  // A face enters the circle index with its first front edge and leaves it
+  // with its last: the index holds exactly the front triangles.
+  Flat_hash_map<const Tds_face*, Face_record> face_records{nullptr};
+  Face_circle_index front_triangle_circles;
+
+  // the level of the edge being processed, which the edges it creates
+  // inherit (Pockets.h)
+  std::uint16_t level = 0;
+  bool loops_changed = false;             // this step split or joined loops of the front
+  std::vector<Edge_key> created_this_step;
+  std::vector<Edge_key> created_since_gather, removed_since_gather;
+};
+
+template <class C, class P, class F>
+void Front_2<C, P, F>::clear()
+{
+  edges.clear();
+  out.clear();
+  in.clear();
+  vertex.clear();
+  xy.clear();
+  ids.clear();
+  free_ids.clear();
+  released_ids.clear();
+  face_records.clear();
+  queue = std::priority_queue<Queue_entry>();
+  level = 0;
+  loops_changed = false;
+  created_this_step.clear();
+  active_points.clear();
+}
+
+// The id of a vertex, which becomes active if it was not.
+template <class C, class P, class F>
+typename Front_2<C, P, F>::Vid Front_2<C, P, F>::activate(Vertex_handle vh)
+{
+  if(const Vid* known = ids.find(&*vh)) return *known;
+  const std::array<double, 2> p = {{ctx_.ix(vh->point()), ctx_.iy(vh->point())}};
+  Vid id;
+  if(!free_ids.empty()) {
+    id = free_ids.back();
+    free_ids.pop_back();
+    vertex[id] = vh;
+    xy[id] = p;
+    CGAL_assertion(out[id].empty() && in[id].empty());
+  } else {
+    if(vertex.size() >= std::size_t(no_vertex) - 1)
+      throw std::length_error("Advancing_front_mesher_2: too many active vertices");
+    id = static_cast<Vid>(vertex.size());
+    vertex.push_back(vh);
+    xy.push_back(p);
+    out.emplace_back();
+    in.emplace_back();
+  }
+  ids.insert(&*vh, id);
+  active_points.insert(id, p[0], p[1]);
+  ctx_.stats.largest_active_vertices = (std::max)(ctx_.stats.largest_active_vertices, ids.size());
+  return id;
+}
+
+// Releases the record of a vertex that now lies behind the front. Its id
+// is reused from the next step on, not before: ids gathered in this step
+// (the neighbourhood, the cavity) must keep naming the same vertex.
+template <class C, class P, class F>
+void Front_2<C, P, F>::release_record(Vid v)
+{
+  CGAL_precondition(out[v].empty() && in[v].empty());
+  active_points.remove(v);
+  ids.erase(&*vertex[v]);
+  released_ids.push_back(v);
+}
+
+template <class C, class P, class F>
+void Front_2<C, P, F>::reuse_released_ids()
+{
+  free_ids.insert(free_ids.end(), released_ids.begin(), released_ids.end());
+  released_ids.clear();
+}
+
+// Is the segment u-v (vertex ids, or no_vertex for a new point) a front
+// edge, in either direction?
+template <class C, class P, class F>
+bool Front_2<C, P, F>::is_front_segment(Vid u, Vid v) const
+{
+  if(u == no_vertex || v == no_vertex) return false;
+  for(Vid w : out[u]) if(w == v) return true;
+  for(Vid w : in[u]) if(w == v) return true;
+  return false;
+}
+
+// `apex`, when known, is the vertex of `behind` opposite the edge: it
+// spares the lookups of the face's vertex ids.
+template <class C, class P, class F>
+void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_index, bool constrained, Vid apex)
+{
+  CGAL_assertion(!edges.contains(key(u, v)));
+  Front_edge fe;
+  fe.behind = behind;
+  fe.behind_index = behind_index;
+  fe.constrained = constrained;
+  fe.level = level;
+  fe.version = ++version_counter;
+  const double len = edge_length(u, v);
+  edges.insert(key(u, v), fe);
+  created_since_gather.push_back(key(u, v));
+  created_this_step.push_back(key(u, v));
+  out[u].push_back(v);
+  in[v].push_back(u);
+  if(!(len <= active_points.reach(u))) active_points.set_reach(u, len);
+  if(behind != Face_handle() && behind->is_in_domain()) count_edge_behind(behind, v, apex, u);
+  queue.push(Queue_entry{len, key(u, v), fe.version, fe.level});
+  if(queue.size() > 2 * edges.size() + 1024) compact_queue();
+  ctx_.stats.largest_front = (std::max)(ctx_.stats.largest_front, edges.size());
+}
+
+// The queue keeps an entry of every front edge until it is popped, also of
+// those closed before their turn (it cannot erase): rebuilt from the front
+// when those are the majority, it holds O(front) entries instead of 15
+// bytes per triangle of the mesh.
+template <class C, class P, class F>
+void Front_2<C, P, F>::compact_queue()
+{
+  std::vector<Queue_entry> live;
+  live.reserve(edges.size());
+  edges.for_each([this, &live](Edge_key k, const Front_edge& fe) {
+    live.push_back(Queue_entry{edge_length(source(k), target(k)), k, fe.version, fe.level});
+  });
+  queue = std::priority_queue<Queue_entry>(std::less<Queue_entry>(), std::move(live));
+  ++queue_compactions;
+}
+
+template <class C, class P, class F>
+void Front_2<C, P, F>::remove_edge(Vid u, Vid v)
+{
+  const Front_edge* it = edges.find(key(u, v));
+  CGAL_assertion(it != nullptr);
+  const Front_edge fe = *it;
+  edges.erase(key(u, v));
+  // beyond 8 removals the neighbourhood probes the table: no need to list more
+  if(removed_since_gather.size() <= 8) removed_since_gather.push_back(key(u, v));
+  out[u].erase_value(v);
+  in[v].erase_value(u);
+  update_reach(u);
+  if(fe.behind != Face_handle() && fe.behind->is_in_domain()) uncount_edge_behind(fe.behind);
+}
+
+// A front vertex's reach in the point index is the length of its longest
+// outgoing front edge: a front edge meeting a disk of radius s about q has
+// its source within s + its length of q, so the vertices found within s
+// plus their reach lead, through their outgoing edges, to every front edge
+// near the disk (see Neighbourhood.h).
+template <class C, class P, class F>
+void Front_2<C, P, F>::update_reach(Vid u)
+{
+  double reach = 0;
+  for(Vid w : out[u]) {
+    const double l = edge_length(u, w);
+    reach = std::isnan(l) ? l : (std::max)(reach, l);
+    if(std::isnan(reach)) break;
+  }
+  active_points.set_reach(u, reach);
+}
+
+// Counts one more front edge with f behind it; its first enters f's circle
+// in the circle index (computed from a, b, c when all three are given).
+template <class C, class P, class F>
+void Front_2<C, P, F>::count_edge_behind(Face_handle f, Vid a, Vid b, Vid c)
+{
+  Face_record* it = face_records.find(&*f);
+  if(it != nullptr) {
+    ++it->front_edges;
+    return;
+  }
+  Phase_scope phase(ctx_.timer, CIRCLE_OCTREE);
+  const Circle circle = (a != no_vertex && b != no_vertex && c != no_vertex)
+                          ? circle_of(x(a), y(a), x(b), y(b), x(c), y(c))
+                          : ctx_.circle_of(f);
+  face_records.insert(&*f, Face_record{front_triangle_circles.insert(circle.cx, circle.cy, circle.r, f), 1});
+  ctx_.stats.largest_live_triangles = (std::max)(ctx_.stats.largest_live_triangles, face_records.size());
+}
+
+template <class C, class P, class F>
+void Front_2<C, P, F>::uncount_edge_behind(Face_handle f)
+{
+  Face_record* it = face_records.find(&*f);
+  CGAL_assertion(it != nullptr);
+  if(--it->front_edges == 0) {
+    Phase_scope phase(ctx_.timer, CIRCLE_OCTREE);
+    front_triangle_circles.remove(it->circle_item);
+    face_records.erase(&*f);
+  }
+}
+
+// The front rises and falls: with uniform sizes it grows to about 1% of the
+// mesh's edges and shrinks to nothing at the end, when the triangulation is
+// largest. Containers keep their capacity, so without this the run's peak
+// would be the triangulation plus the structures of the largest front (4
+// bytes per triangle at 1M triangles). Each structure is rebuilt at its
+// current size once it uses less than a quarter (hash tables: an eighth) of
+// what it holds; the rebuilds cost O(front) and come at geometrically
+// spaced sizes.
+template <class C, class P, class F>
+void Front_2<C, P, F>::release_unused_memory()
+{
+  if(vertex.size() >= 64 && 4 * ids.size() < vertex.size()) compact_vertex_ids();
+  edges.shrink_if_sparse();
+  face_records.shrink_if_sparse();
+  if(front_triangle_circles.is_sparse())
+    front_triangle_circles.rebuild([this](Face_handle f, std::size_t item) {
+      Face_record* r = face_records.find(&*f);
+      CGAL_assertion(r != nullptr);
+      r->circle_item = item;
+    });
+}
+
+// Renumbers the active vertices 0..n-1 (keeping their order, so that
+// nothing that depends on ids changes order) and rebuilds everything
+// indexed or keyed by vertex ids. Only between steps: ids gathered during a
+// step must keep naming the same vertex.
+template <class C, class P, class F>
+void Front_2<C, P, F>::compact_vertex_ids()
+{
+  CGAL_precondition(released_ids.empty());
+  std::vector<Vid> new_id(vertex.size(), no_vertex);
+  for(Vid v : free_ids) new_id[v] = 0; // marks the free ids
+  Vid n = 0;
+  for(Vid v = 0; v < new_id.size(); ++v) new_id[v] = (new_id[v] == no_vertex) ? n++ : no_vertex;
+  CGAL_assertion(n == ids.size());
+
+  std::vector<Vertex_handle> new_vertex(n);
+  std::vector<std::array<double, 2> > new_xy(n);
+  std::vector<Compact_id_list> new_out(n), new_in(n);
+  for(Vid v = 0; v < new_id.size(); ++v) {
+    const Vid w = new_id[v];
+    if(w == no_vertex) continue;
+    new_vertex[w] = vertex[v];
+    new_xy[w] = xy[v];
+    for(Vid t : out[v]) new_out[w].push_back(new_id[t]);
+    for(Vid s : in[v]) new_in[w].push_back(new_id[s]);
+  }
+  vertex.swap(new_vertex);
+  xy.swap(new_xy);
+  out.swap(new_out);
+  in.swap(new_in);
+  std::vector<Vid>().swap(free_ids);
+
+  Flat_hash_map<const Tds_vertex*, Vid> new_ids(nullptr);
+  new_ids.reserve(n);
+  for(Vid w = 0; w < n; ++w) new_ids.insert(&*vertex[w], w);
+  ids = std::move(new_ids);
+
+  Flat_hash_map<Edge_key, Front_edge> new_edges(~Edge_key(0));
+  new_edges.reserve(edges.size());
+  edges.for_each([&](Edge_key k, const Front_edge& fe) {
+    new_edges.insert(key(new_id[source(k)], new_id[target(k)]), fe);
+  });
+  edges = std::move(new_edges);
+
+  active_points.renumber(new_id);
+  compact_queue(); // the queue's keys name vertices too
+  ++ctx_.stats.memory_compactions;
+}
+
+// The front invariants (O(front size)): every front vertex has as many
+// incoming as outgoing front edges, every front edge is recorded at both
+// end points, and every front edge's face on the meshed side (unless null
+// or `ghost`) really has that edge; and the records of the active vertices
+// agree: every id not free names a vertex that maps back to it, with its
+// coordinates and a place in the point index.
+template <class C, class P, class F>
+bool Front_2<C, P, F>::is_valid(Face_handle ghost) const
+{
+  std::vector<bool> is_free(vertex.size(), false);
+  for(Vid v : free_ids) is_free[v] = true;
+  for(Vid v : released_ids) is_free[v] = true;
+  std::size_t active = 0;
+  for(Vid v = 0; v < vertex.size(); ++v) {
+    if(is_free[v]) continue;
+    ++active;
+    const Vid* id = ids.find(&*vertex[v]);
+    if(id == nullptr || *id != v || !active_points.contains(v)) return false;
+    if(xy[v][0] != ctx_.ix(vertex[v]->point()) || xy[v][1] != ctx_.iy(vertex[v]->point())) return false;
+  }
+  if(active != ids.size()) return false;
+  std::size_t counted = 0;
+  for(Vid v = 0; v < out.size(); ++v) {
+    if(out[v].size() != in[v].size()) return false;
+    if(is_free[v] && !out[v].empty()) return false;
+    for(Vid w : out[v]) {
+      const Front_edge* it = edges.find(key(v, w));
+      if(it == nullptr) return false;
+      if(std::find(in[w].begin(), in[w].end(), v) == in[w].end()) return false;
+      const Front_edge& fe = *it;
+      if(fe.behind != Face_handle() && fe.behind != ghost) {
+        const int i = fe.behind_index;
+        if(fe.behind->vertex(C::cw(i)) != vertex[v] || fe.behind->vertex(C::ccw(i)) != vertex[w]) return false;
+        if(fe.behind->neighbor(i) != Face_handle()) return false;
+      }
+      ++counted;
+    }
+  }
+  return counted == edges.size();
+}
+
+} // namespace internal
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_FRONT_2_H

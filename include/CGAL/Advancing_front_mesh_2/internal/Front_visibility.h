@@ -1,0 +1,253 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_FRONT_VISIBILITY_H
+#define CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_FRONT_VISIBILITY_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Neighbourhood.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace internal {
+
+// Visibility through the unmeshed region: the free sectors at the front
+// vertices, segments blocked by front edges or vertices (steps 5 and 6),
+// and segments blocked by input constraints, which decide which broken
+// triangles a new point can see (Fig. 6). Every decision is taken with the
+// exact predicates; boxes in doubles only skip the far edges.
+//
+// `ConstraintCircleIndex` models AdvancingFrontCircleIndex_2 with pairs of
+// vertex handles (an input constraint's end points) as payloads.
+template <class Front, class ConstraintCircleIndex>
+class Front_visibility
+{
+public:
+  typedef typename Front::Context Context;
+  typedef typename Front::Vid Vid;
+  typedef typename Front::Edge_key Edge_key;
+  typedef typename Front::Point Point;
+  typedef typename Front::Vertex_handle Vertex_handle;
+  typedef typename Context::Phase_scope Phase_scope;
+  typedef internal::Neighbourhood<Front> Neighbourhood;
+  typedef ConstraintCircleIndex Constraint_circle_index;
+  // an input constraint, by its end vertices (which may become inactive)
+  typedef std::pair<Vertex_handle, Vertex_handle> Constraint;
+  static constexpr Vid no_vertex = Front::no_vertex;
+
+  Front_visibility(Context& ctx, const Front& front) : ctx_(ctx), front_(front) {}
+
+  bool in_free_sector(Vid v, const Point& q, Vid qid = no_vertex) const;
+  bool visible_from_both(Vid s1, const Point& ps1, Vid s2, const Point& ps2, Vid t, const Point& pt,
+                         const Neighbourhood& n, bool sectors_tested = false) const;
+  bool sees_point(const Point& p, double px, double py, double qx, double qy);
+
+  // The input constraints as diametral circles. They never change: the
+  // static index answers the visibility questions of the circle search.
+  Constraint_circle_index constraint_circles;
+
+private:
+  bool edge_blocks(Vid g, Vid h, Vid s, const Point& ps, Vid t, const Point& pt) const;
+
+  // A segment's bounding box in doubles, padded by more than the rounding
+  // of the coordinates: most front edges and vertices of a neighbourhood are
+  // far from a segment, and this test skips their exact tests.
+  struct Segment_box
+  {
+    // doubles are exact; CGAL promises to_double of other number types (a
+    // lazy exact number) only to a relative precision of 1e-5
+    static constexpr double relative_pad = Context::double_coordinates ? 1e-14 : 1e-5;
+    double x0, y0, x1, y1;
+    double magnitude; // of the end points' coordinates
+
+    // the end points' internal coordinates
+    Segment_box(double sx, double sy, double tx, double ty)
+    {
+      magnitude = (std::max)({std::abs(sx), std::abs(sy), std::abs(tx), std::abs(ty)});
+      const double pad = relative_pad * magnitude;
+      x0 = (std::min)(sx, tx) - pad; x1 = (std::max)(sx, tx) + pad;
+      y0 = (std::min)(sy, ty) - pad; y1 = (std::max)(sy, ty) + pad;
+    }
+
+    // the box of the segment (or point) g-h does not meet this one
+    bool apart(double gx, double gy, double hx, double hy) const
+    {
+      const double gpad = relative_pad * (std::max)({std::abs(gx), std::abs(gy), std::abs(hx), std::abs(hy)});
+      return (std::max)(gx, hx) + gpad < x0 || (std::min)(gx, hx) - gpad > x1 ||
+             (std::max)(gy, hy) + gpad < y0 || (std::min)(gy, hy) - gpad > y1;
+    }
+  };
+
+  // The union of two segment boxes with a fixed pad, a cheaper first test
+  // for the many far edges: whatever is apart from it is apart from both
+  // boxes. (The pad of Segment_box::apart() grows with the tested edge's
+  // magnitude G; for G <= 2 M, M the boxes' magnitude, it is at most the
+  // 2 relative_pad M added here, and for larger G the edge lies more than
+  // G - M >= G / 2 away from the boxes in some coordinate, beyond both
+  // pads.)
+  struct Union_box
+  {
+    double x0, y0, x1, y1;
+
+    Union_box(const Segment_box& b1, const Segment_box& b2)
+    {
+      const double pad = 2 * Segment_box::relative_pad * (std::max)(b1.magnitude, b2.magnitude);
+      x0 = (std::min)(b1.x0, b2.x0) - pad; x1 = (std::max)(b1.x1, b2.x1) + pad;
+      y0 = (std::min)(b1.y0, b2.y0) - pad; y1 = (std::max)(b1.y1, b2.y1) + pad;
+    }
+
+    bool apart(double gx, double gy, double hx, double hy) const
+    {
+      return (std::max)(gx, hx) < x0 || (std::min)(gx, hx) > x1 ||
+             (std::max)(gy, hy) < y0 || (std::min)(gy, hy) > y1;
+    }
+  };
+
+  Context& ctx_;
+  const Front& front_;
+};
+
+// Is the direction from front vertex v towards q inside the unmeshed region
+// at v? The unmeshed sectors at v run counter-clockwise from each outgoing
+// front edge to the first incoming one. Directions strictly inside a sector
+// qualify, and so do the sector's own bounding front edges when q is their
+// other end point (vertex id qid): the segment is then that front edge,
+// which a triangle may close.
+template <class Front, class C>
+bool Front_visibility<Front, C>::in_free_sector(Vid v, const Point& q, Vid qid) const
+{
+  if(front_.out[v].empty()) return front_.in[v].empty();
+  const Point& pv = front_.point(v);
+  for(Vid o : front_.out[v]) {
+    Vid closing = no_vertex;
+    for(Vid i : front_.in[v])
+      if(closing == no_vertex || ctx_.pred.turns_before(pv, front_.point(o), front_.point(i), front_.point(closing)))
+        closing = i;
+    if(closing == no_vertex) continue;
+    if(qid != no_vertex && (qid == o || qid == closing)) return true;
+    if(ctx_.pred.turn_region(pv, front_.point(o), q) == 3) continue;
+    if(ctx_.pred.turns_before(pv, front_.point(o), q, front_.point(closing))) return true;
+  }
+  return false;
+}
+
+// Does front edge (g, h) block the segment s-t (s, t given as vertex ids, or
+// no_vertex for the new point), which is not a front edge and leaves its end
+// points strictly inside free sectors (in_free_sector() passed)? An edge
+// sharing an end point with the segment could only block it by running
+// along it, and no front edge enters the inside of a free sector (around a
+// vertex, the front's edges alternate between leaving and entering it, and
+// a free sector runs from a leaving edge to the next entering one): such an
+// edge never blocks, without a predicate.
+template <class Front, class C>
+bool Front_visibility<Front, C>::edge_blocks(Vid g, Vid h, Vid s, const Point& ps, Vid t, const Point& pt) const
+{
+  const bool gs = (g == s), gt = (g == t), hs = (h == s), ht = (h == t);
+  if(gs || hs || gt || ht) {
+    CGAL_assertion(((gs && ht) || (gt && hs)) ||
+                   !((gs || hs) ? ctx_.pred.overlap_from_shared_end(ps, front_.point(gs ? h : g), pt)
+                                : ctx_.pred.overlap_from_shared_end(pt, front_.point(gt ? h : g), ps)));
+    return false;
+  }
+  return ctx_.pred.closed_segments_meet(ps, pt, front_.point(g), front_.point(h));
+}
+
+// Are the open segments s1-t and s2-t inside the unmeshed region: leaving
+// their end points into free sectors, crossing no front edge and passing
+// through no vertex? (s1, s2, t are vertex ids, or no_vertex for the new
+// point.) Complete when the segments lie in the neighbourhood's disk. Both
+// segments are tested in one pass over the neighbourhood: the callers
+// always need both (an apex seen from a and b, a new point seen from a and
+// b).
+template <class Front, class C>
+bool Front_visibility<Front, C>::visible_from_both(Vid s1, const Point& ps1, Vid s2, const Point& ps2, Vid t,
+                                                   const Point& pt, const Neighbourhood& n,
+                                                   bool sectors_tested) const
+{
+  Phase_scope phase(ctx_.timer, VISIBILITY);
+  if(!sectors_tested) {
+    if(s1 != no_vertex && !in_free_sector(s1, pt, t)) return false;
+    if(t != no_vertex && !in_free_sector(t, ps1, s1)) return false;
+    if(s2 != no_vertex && !in_free_sector(s2, pt, t)) return false;
+    if(t != no_vertex && !in_free_sector(t, ps2, s2)) return false;
+  }
+  // A segment that is a front edge itself (the apex is the next vertex
+  // along the front, the most common closure) crosses no front edge and
+  // holds no vertex, the front being a planar straight-line graph: only its
+  // end points' sectors, tested above, matter.
+  const bool open1 = !front_.is_front_segment(s1, t), open2 = !front_.is_front_segment(s2, t);
+  if(!open1 && !open2) return true;
+  const double tx = ctx_.ix(pt), ty = ctx_.iy(pt);
+  const Segment_box box1(ctx_.ix(ps1), ctx_.iy(ps1), tx, ty), box2(ctx_.ix(ps2), ctx_.iy(ps2), tx, ty);
+  const Union_box both(box1, box2);
+  // every front edge that can block: those near the disk when it was
+  // gathered, and those created since
+  auto blocks = [&](Vid g, Vid h, double gx, double gy, double hx, double hy, Edge_key k) {
+    if(both.apart(gx, gy, hx, hy)) return false;
+    const bool near1 = open1 && !box1.apart(gx, gy, hx, hy), near2 = open2 && !box2.apart(gx, gy, hx, hy);
+    if(!(near1 || near2) || !n.still_on_front(k)) return false;
+    return (near1 && edge_blocks(g, h, s1, ps1, t, pt)) || (near2 && edge_blocks(g, h, s2, ps2, t, pt));
+  };
+  for(const auto& e : n.edges)
+    if(blocks(Front::source(e.key), Front::target(e.key), e.x0, e.y0, e.x1, e.y1, e.key)) return false;
+  for(Edge_key k : n.new_edges()) {
+    const Vid g = Front::source(k), h = Front::target(k);
+    if(blocks(g, h, front_.x(g), front_.y(g), front_.x(h), front_.y(h), k)) return false;
+  }
+  for(std::size_t i = 0; i < n.vertices.size(); ++i) {
+    const std::size_t z = n.vertices[i];
+    if(z == t) continue;
+    const double zx = n.vertex_xy[i][0], zy = n.vertex_xy[i][1];
+    if(both.apart(zx, zy, zx, zy)) continue;
+    if(open1 && z != s1 && !box1.apart(zx, zy, zx, zy) && ctx_.pred.in_open_segment(ps1, pt, front_.point(Vid(z))))
+      return false;
+    if(open2 && z != s2 && !box2.apart(zx, zy, zx, zy) && ctx_.pred.in_open_segment(ps2, pt, front_.point(Vid(z))))
+      return false;
+  }
+  return true;
+}
+
+// Does the segment from p to (qx, qy) cross no input constraint? The end
+// point is rounded; this only selects which triangles are removed.
+template <class Front, class C>
+bool Front_visibility<Front, C>::sees_point(const Point& p, double px, double py, double qx, double qy)
+{
+  Phase_scope phase(ctx_.timer, VISIBILITY);
+  const Point q = ctx_.scaling.to_user_point(qx, qy);
+  bool blocked = false;
+  ++ctx_.stats.edge_octree_queries;
+  constraint_circles.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * length(qx - px, qy - py),
+                           [&](const Constraint& c) {
+    if(blocked) return;
+    const Point& pu = c.first->point();
+    const Point& pv = c.second->point();
+    // a proper crossing only: touching an end point does not hide
+    const Orientation o1 = ctx_.pred.orientation(p, q, pu), o2 = ctx_.pred.orientation(p, q, pv);
+    if(o1 == COLLINEAR || o2 == COLLINEAR || o1 == o2) return;
+    const Orientation o3 = ctx_.pred.orientation(pu, pv, p), o4 = ctx_.pred.orientation(pu, pv, q);
+    if(o3 == COLLINEAR || o4 == COLLINEAR || o3 == o4) return;
+    blocked = true;
+  });
+  return !blocked;
+}
+
+} // namespace internal
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_FRONT_VISIBILITY_H

@@ -1,0 +1,228 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_POINT_PLACEMENT_H
+#define CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_POINT_PLACEMENT_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesh_2/internal/Delaunay_apex.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_triangles.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_visibility.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Neighbourhood.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Size_bound.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace internal {
+
+// Where a front edge and its step-5 apex leave the new point: the edge's
+// frame (midpoint, normal, size bound) and the distances of step 6.
+struct Edge_frame
+{
+  double L;              // the edge's length
+  double mx, my, nx, ny; // midpoint, unit normal towards the unmeshed side
+  double rho;            // the size bound at the midpoint (step 3)
+  double accept;         // largest circumradius accepted for a closure
+  double d_target;       // the new point's ideal distance from the midpoint
+  double radius;         // the disk holding every circle through the edge that matters
+  double star_reach;     // the disk that also holds the new point's star
+};
+
+// Step 6 of Mavriplis (1992) and its Fig. 7: the edge is closed on its
+// Delaunay apex when that triangle is small enough; otherwise a point is
+// placed along the bisector, clamped below the apex's circle, and kept only
+// if it is acceptable; with no room for it, the edge is closed anyway (the
+// robustness fallback, a forced closure).
+template <class Front, class Visibility, class Triangles, class Sizing_bound>
+class Point_placement
+{
+public:
+  typedef typename Front::Context Context;
+  typedef typename Front::Vid Vid;
+  typedef typename Front::Point Point;
+  typedef typename Context::Phase_scope Phase_scope;
+  typedef internal::Neighbourhood<Front> Neighbourhood;
+  typedef internal::Delaunay_apex<Front, Visibility> Apex;
+  static constexpr Vid no_vertex = Front::no_vertex;
+
+  // A triangle on an existing point is accepted up to this factor over the
+  // size bound rho; a little slack avoids placing a point next to an
+  // existing one when the closing triangle is barely too large.
+  static constexpr double closure_tolerance = 1.25;
+  // A new point clamped closer than this fraction of the edge length is not
+  // placed: the existing apex is used instead.
+  static constexpr double placement_floor = 0.3;
+  // A new point must keep this fraction of its distance to the edge from
+  // every other front point and edge.
+  static constexpr double point_clearance = 0.5;
+
+  Point_placement(Context& ctx, const Front& front, Neighbourhood& neighbourhood, Apex& apex,
+                  const Visibility& visibility, Triangles& triangles, Sizing_bound& size)
+    : ctx_(ctx), front_(front), neighbourhood_(neighbourhood), apex_(apex), visibility_(visibility),
+      triangles_(triangles), size_(size) {}
+
+  Edge_frame frame(Vid a, Vid b);
+  bool close_or_clamp(Vid a, Vid b, Vid w, const Edge_frame& e, double& d);
+  void close_on_existing_point(Vid a, Vid b, Vid c);
+  void forced_closure(Vid a, Vid b, double radius);
+  bool is_acceptable_point(Vid a, Vid b, const Point& p, double px, double py, double d) const;
+
+private:
+  Context& ctx_;
+  const Front& front_;
+  Neighbourhood& neighbourhood_;
+  Apex& apex_;
+  const Visibility& visibility_;
+  Triangles& triangles_;
+  Sizing_bound& size_;
+};
+
+template <class Front, class V, class T, class S>
+Edge_frame Point_placement<Front, V, T, S>::frame(Vid a, Vid b)
+{
+  Edge_frame e;
+  const double ax = front_.x(a), ay = front_.y(a), bx = front_.x(b), by = front_.y(b);
+  e.L = length(bx - ax, by - ay);
+  e.mx = 0.5 * (ax + bx);
+  e.my = 0.5 * (ay + by);
+  e.nx = -(by - ay) / e.L;
+  e.ny = (bx - ax) / e.L;
+  e.rho = size_.target_circumradius(e.mx, e.my); // step 3
+  e.accept = closure_tolerance * e.rho;
+  // step 6's ideal distance from the midpoint along the bisector: the point
+  // making a triangle of circumradius rho, or the diametral circle when rho
+  // is smaller than half the edge
+  e.d_target = (e.rho >= 0.5 * e.L) ? e.rho + std::sqrt(e.rho * e.rho - 0.25 * e.L * e.L) : 0.5 * e.L;
+  // The search covers every circle through a and b that matters: those
+  // small enough to accept, and those whose centre lies before d_target
+  // (which limit the new point's position, Fig. 7).
+  e.radius = (std::max)(2 * e.accept, e.d_target + std::sqrt(e.d_target * e.d_target + 0.25 * e.L * e.L));
+  // The gathered disk is made large enough to also hold, in most steps, the
+  // disk of the new point's star (see Cavity.h), which then needs no search
+  // of its own: the new point lies at most d_target from m, and its star
+  // reaches 2 * 1.25 * max(rho, r) from it, where the circle through a, b
+  // and the point has a radius r of at most 0.57 L (at the placement floor)
+  // or rho.
+  e.star_reach = e.d_target + 2 * closure_tolerance * (std::max)(e.rho, 0.57 * e.L);
+  return e;
+}
+
+// Closes a -> b on its apex w when the triangle is small enough, or forced
+// when there is no room for a point below w's circle; returns true then.
+// Otherwise sets `d`, the new point's distance from the midpoint: the ideal
+// one, or clamped below w's circle (Fig. 7).
+template <class Front, class V, class T, class S>
+bool Point_placement<Front, V, T, S>::close_or_clamp(Vid a, Vid b, Vid w, const Edge_frame& e, double& d)
+{
+  d = e.d_target;
+  if(w == no_vertex) return false;
+  const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w));
+  const double centre_offset = length(c.cx - e.mx, c.cy - e.my);
+  const bool complete = centre_offset + c.r <= e.radius;
+  if(complete && c.r <= e.accept) { // step 6: close
+    close_on_existing_point(a, b, w);
+    return true;
+  }
+  const double h_w = (c.cx - e.mx) * e.nx + (c.cy - e.my) * e.ny; // signed height of its centre
+  if(h_w < e.d_target) {
+    if(!(h_w >= placement_floor * e.L)) {
+      // No room for a point between the edge and the circle: close. On w
+      // only if its circle lies in the searched disk (then no front point
+      // outside can be in it); otherwise the closure searches on.
+      ++ctx_.stats.forced_closures;
+      if(complete) close_on_existing_point(a, b, w);
+      else forced_closure(a, b, e.radius);
+      return true;
+    }
+    d = h_w; // upper clamp (Fig. 7)
+  }
+  return false;
+}
+
+template <class Front, class V, class T, class S>
+void Point_placement<Front, V, T, S>::close_on_existing_point(Vid a, Vid b, Vid c)
+{
+  ++ctx_.stats.triangles_closed_on_existing_points;
+  triangles_.make_triangle(a, b, c);
+}
+
+// Closes a -> b on its constrained Delaunay apex whatever its size. The
+// unmeshed region is a polygonal region bounded by the front, so the apex
+// exists; the search grows until the apex's circle lies in the searched
+// disk, which makes it the true apex.
+template <class Front, class V, class T, class S>
+void Point_placement<Front, V, T, S>::forced_closure(Vid a, Vid b, double radius)
+{
+  const double mx = 0.5 * (front_.x(a) + front_.x(b)), my = 0.5 * (front_.y(a) + front_.y(b));
+  const double L = front_.edge_length(a, b);
+  double r = (std::max)(radius, L);
+  for(;;) {
+    neighbourhood_.gather(mx, my, r);
+    // the search is exhaustive once it holds every active vertex (or its
+    // radius stopped being a number): the loop ends on that, not on a count
+    const bool everything = neighbourhood_.vertices.size() >= front_.active_points.size() || !std::isfinite(r);
+    const Vid w = apex_(a, b, neighbourhood_);
+    if(w != no_vertex) {
+      const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w));
+      const double needed = length(c.cx - mx, c.cy - my) + c.r;
+      if(needed <= r || everything) {
+        close_on_existing_point(a, b, w);
+        return;
+      }
+      r = (std::max)(2 * r, needed * (1 + 1e-9));
+    } else {
+      if(everything) {
+        throw std::logic_error("Advancing_front_mesher_2: internal error: a front edge has no "
+                               "visible apex (the front is inconsistent)");
+      }
+      r *= 2;
+    }
+  }
+}
+
+// A placed point is kept only if it lies strictly inside the unmeshed
+// region (seen from a and b through the region, so not across the front or
+// a constraint) and not too close to any front point or edge: such a point
+// would make a needle, and the closure fallback does better there.
+template <class Front, class V, class T, class S>
+bool Point_placement<Front, V, T, S>::is_acceptable_point(Vid a, Vid b, const Point& p, double px, double py,
+                                                          double d) const
+{
+  Phase_scope phase(ctx_.timer, PLACEMENT);
+  const Neighbourhood& n = neighbourhood_;
+  const double min_dist = point_clearance * d;
+  for(std::size_t i = 0; i < n.vertices.size(); ++i) {
+    if(length(n.vertex_xy[i][0] - px, n.vertex_xy[i][1] - py) < min_dist) return false;
+    if(front_.point(Vid(n.vertices[i])) == p) return false;
+  }
+  // the clearance tests first: plain arithmetic, they reject most points
+  // that fail at all before the exact visibility tests run
+  for(const auto& e : n.edges)
+    if(segment_distance(px, py, e.x0, e.y0, e.x1, e.y1) < min_dist && n.still_on_front(e.key)) return false;
+  for(typename Front::Edge_key k : n.new_edges()) {
+    const Vid g = Front::source(k), h = Front::target(k);
+    if(segment_distance(px, py, front_.x(g), front_.y(g), front_.x(h), front_.y(h)) < min_dist &&
+       n.still_on_front(k))
+      return false;
+  }
+  return visibility_.visible_from_both(a, front_.point(a), b, front_.point(b), no_vertex, p, n);
+}
+
+} // namespace internal
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_POINT_PLACEMENT_H

@@ -1,0 +1,86 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_REFINEMENT_CONTEXT_H
+#define CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_REFINEMENT_CONTEXT_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesh_2/Statistics.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Coordinate_scaling.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Double_geometry.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_predicates.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Phase_timer.h>
+
+#include <type_traits>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace internal {
+
+// What every component of the mesher shares: the triangulation being
+// meshed, the exact predicates, the scaling of the internal coordinates,
+// the phase timer and the statistics.
+template <class Tr_>
+struct Refinement_context
+{
+  typedef Tr_ Tr;
+  typedef typename Tr::Geom_traits Geom_traits;
+  typedef typename Geom_traits::FT FT;
+  typedef typename Tr::Point Point;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Face_handle Face_handle;
+  typedef typename Tr::Triangulation_data_structure Tds;
+  typedef typename Tds::Vertex Tds_vertex;
+  typedef typename Tds::Face Tds_face;
+  typedef Phase_timer::Scope Phase_scope;
+
+  // the internal coordinates are exact (the kernel's number type is double)
+  static constexpr bool double_coordinates = std::is_same<FT, double>::value;
+
+  explicit Refinement_context(Tr& t) : tr(t), pred(t.geom_traits()) {}
+
+  static int ccw(int i) { return (i + 1) % 3; }
+  static int cw(int i) { return (i + 2) % 3; }
+
+  Tds& tds() { return tr.tds(); }
+  const Tds& tds() const { return tr.tds(); }
+
+  double ix(const Point& p) const { return scaling.ix(p); }
+  double iy(const Point& p) const { return scaling.iy(p); }
+
+  // the circumcircle of a face in internal coordinates, read through the
+  // face (its vertices need not be active)
+  Circle circle_of(Face_handle f) const
+  {
+    auto X = [this, &f](int i) { return ix(f->vertex(i)->point()); };
+    auto Y = [this, &f](int i) { return iy(f->vertex(i)->point()); };
+    return internal::circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2));
+  }
+
+  double triangle_area(Face_handle f) const
+  {
+    const double ax = ix(f->vertex(0)->point()), ay = iy(f->vertex(0)->point());
+    const double bx = ix(f->vertex(1)->point()), by = iy(f->vertex(1)->point());
+    const double cx = ix(f->vertex(2)->point()), cy = iy(f->vertex(2)->point());
+    return signed_area(ax, ay, bx, by, cx, cy);
+  }
+
+  Tr& tr;
+  Front_predicates<Geom_traits> pred;
+  Coordinate_scaling<Point> scaling;
+  Phase_timer timer;
+  Advancing_front_mesh_2::Statistics stats;
+};
+
+} // namespace internal
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_INTERNAL_REFINEMENT_CONTEXT_H
