@@ -13,6 +13,7 @@
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
@@ -62,45 +63,6 @@ inline double squared_sine_of_smallest_angle(double ax, double ay, double bx, do
   if(!(area2 > 0)) return 0;
   const double q = area2 * area2 / (l[1] * l[2]);
   return std::isfinite(q) ? q : 0.;
-}
-
-// Lawson's flips, starting from the edges on `stack`, on the edges between
-// two finite in-domain faces until every edge reached is locally Delaunay
-// (strictly: cocircular quadrilaterals are left alone). Constrained edges are
-// never flipped. Calls `on_flip(f, g)` after each flip, f and g the two faces
-// (now sharing the new diagonal). Returns the number of flips.
-template <class CDT, class On_flip>
-std::size_t lawson_flips(CDT& cdt, std::vector<typename CDT::Edge>& stack, const On_flip& on_flip)
-{
-  typedef typename CDT::Face_handle Face_handle;
-  std::size_t flips = 0;
-  while(!stack.empty()) {
-    Face_handle f = stack.back().first; // flip() takes a reference
-    const int i = stack.back().second;
-    stack.pop_back();
-    const Face_handle g = f->neighbor(i);
-    if(!f->is_in_domain() || cdt.is_infinite(f) || cdt.is_infinite(g) || !g->is_in_domain()) continue;
-    if(!cdt.is_flipable(f, i, false)) continue;
-    cdt.flip(f, i);
-    ++flips;
-    on_flip(f, g);
-    // the four edges of the new quadrilateral's sides
-    for(Face_handle h : {f, g})
-      for(int k = 0; k < 3; ++k)
-        if(h->neighbor(k) != f && h->neighbor(k) != g) stack.emplace_back(h, k);
-  }
-  return flips;
-}
-
-// Lawson's flips over the whole triangulation's in-domain faces.
-template <class CDT>
-std::size_t restore_constrained_delaunay(CDT& cdt)
-{
-  std::vector<typename CDT::Edge> stack;
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if(f->is_in_domain())
-      for(int i = 0; i < 3; ++i) stack.emplace_back(f, i);
-  return lawson_flips(cdt, stack, [](typename CDT::Face_handle, typename CDT::Face_handle) {});
 }
 
 } // namespace internal

@@ -22,6 +22,7 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Front_triangles.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_visibility.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Initial_front.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Neighbourhood.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Pockets.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Point_placement.h>
@@ -153,7 +154,6 @@ private:
   void close_remaining_front();
   void finish();
   void finish_triangulation();
-  void restore_delaunay_property();
   void stop_clock(const std::chrono::steady_clock::time_point& start);
   static double seconds_since(const std::chrono::steady_clock::time_point& start)
   {
@@ -418,7 +418,7 @@ void Advancing_front_refiner<Tr, S, V, P, C>::finish()
 template <class Tr, class S, class V, class P, class C>
 void Advancing_front_refiner<Tr, S, V, P, C>::finish_triangulation()
 {
-  restore_delaunay_property();
+  ctx_.stats.delaunay_repair_flips += restore_constrained_delaunay(ctx_.tr);
   // vertices may still point at faces deleted during meshing
   for(auto f = ctx_.tr.all_faces_begin(); f != ctx_.tr.all_faces_end(); ++f)
     for(int i = 0; i < 3; ++i) f->vertex(i)->set_face(f);
@@ -428,47 +428,6 @@ void Advancing_front_refiner<Tr, S, V, P, C>::finish_triangulation()
   ctx_.stats.number_of_faces = faces;
   ctx_.stats.number_of_vertices = ctx_.tr.number_of_vertices();
   CGAL_expensive_postcondition(ctx_.tr.is_valid());
-}
-
-// Lawson's flips on unconstrained in-domain edges.
-template <class Tr, class S, class V, class P, class C>
-void Advancing_front_refiner<Tr, S, V, P, C>::restore_delaunay_property()
-{
-  // Each edge is tested once, from the face with the smaller address; a
-  // flip pushes the edges of its two new faces on a stack, so the memory
-  // is that of the flips, not of the mesh (a stack of every edge was 48
-  // bytes per triangle, the largest allocation of a whole run).
-  std::vector<std::pair<Face_handle, int> > stack;
-  auto needs_flip = [this](Face_handle f, int i) {
-    if(f->is_constrained(i)) return false;
-    Face_handle g = f->neighbor(i);
-    if(!f->is_in_domain() || !g->is_in_domain() || ctx_.tr.is_infinite(g) || ctx_.tr.is_infinite(f)) return false;
-    const int j = g->index(f);
-    return ctx_.pred.strictly_inside_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
-                                            g->vertex(j)->point());
-  };
-  for(auto fit = ctx_.tr.finite_faces_begin(); fit != ctx_.tr.finite_faces_end(); ++fit) {
-    Face_handle start = fit;
-    if(!start->is_in_domain()) continue;
-    for(int i0 = 0; i0 < 3; ++i0) {
-      if(&*start->neighbor(i0) < &*start || !needs_flip(start, i0)) continue;
-      stack.emplace_back(start, i0);
-      while(!stack.empty()) {
-        Face_handle f = stack.back().first;
-        const int i = stack.back().second;
-        stack.pop_back();
-        if(!needs_flip(f, i)) continue;
-        Face_handle g = f->neighbor(i);
-        // the triangulation's flip keeps the constraint flags right
-        ctx_.tr.flip(f, i);
-        ++ctx_.stats.delaunay_repair_flips;
-        for(int k = 0; k < 3; ++k) {
-          stack.emplace_back(f, k);
-          stack.emplace_back(g, k);
-        }
-      }
-    }
-  }
 }
 
 // ------------------------------------------------------------- checkpoints

@@ -89,7 +89,6 @@ private:
                     double accept_raised, double star_radius, bool no_cavity, Vid apex_before);
   bool may_join_star(Vid u, Vid v, Vid w, Vid a, Vid b, double px, double py, double accept,
                      double accept_raised, double star_radius) const;
-  double radius_ratio(Vid a, Vid b, Vid c) const;
 
   Context& ctx_;
   Front& front_;
@@ -341,21 +340,11 @@ bool Cavity<Front, V, T, P, Vis>::may_join_star(Vid u, Vid v, Vid w, Vid a, Vid 
   // written so that a circle that could not be computed (NaN) is rejected
   if(!(length(c.cx - px, c.cy - py) + c.r <= star_radius)) return false;
   if(!(c.r <= accept) && !(u == a && v == b) &&
-     (!(c.r <= accept_raised) || !(radius_ratio(u, v, w) >= raised_bound_min_quality)))
+     (!(c.r <= accept_raised) ||
+      !(radius_ratio(front_.x(u), front_.y(u), front_.x(v), front_.y(v), front_.x(w), front_.y(w)) >=
+        raised_bound_min_quality)))
     return false;
   return true;
-}
-
-template <class Front, class V, class T, class P, class Vis>
-double Cavity<Front, V, T, P, Vis>::radius_ratio(Vid a, Vid b, Vid c) const
-{
-  const double l0 = length(front_.x(b) - front_.x(c), front_.y(b) - front_.y(c)),
-               l1 = length(front_.x(a) - front_.x(c), front_.y(a) - front_.y(c)),
-               l2 = length(front_.x(a) - front_.x(b), front_.y(a) - front_.y(b));
-  const double area = 0.5 * std::abs((front_.x(b) - front_.x(a)) * (front_.y(c) - front_.y(a)) -
-                                     (front_.y(b) - front_.y(a)) * (front_.x(c) - front_.x(a)));
-  const double s = 0.5 * (l0 + l1 + l2);
-  return 8 * area * area / (s * l0 * l1 * l2);
 }
 
 } // namespace internal

@@ -72,6 +72,24 @@ inline double signed_area(double ax, double ay, double bx, double by, double cx,
   return 0.5 * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
 }
 
+// One implementation of the shape measure: the mesher's needle guard,
+// mesh_quality() and the smoothing's guard use it.
+// 2r/R of the triangle abc in double precision, 1 when equilateral, 0 when
+// flat or degenerate. Lengths are divided by the longest edge first, so that
+// neither the squared area nor the product of the lengths under- or
+// overflows whatever the coordinates' scale.
+inline double radius_ratio(double ax, double ay, double bx, double by, double cx, double cy)
+{
+  const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+  const double a = std::hypot(cx - bx, cy - by), b = std::hypot(vx, vy), c = std::hypot(ux, uy);
+  const double longest = (std::max)(a, (std::max)(b, c));
+  if(!(longest > 0) || !std::isfinite(longest)) return 0;
+  const double area2 = (ux / longest) * (vy / longest) - (uy / longest) * (vx / longest); // twice the area
+  const double s = 0.5 * (a + b + c) / longest;
+  const double rr = 2 * area2 * area2 / (s * (a / longest) * (b / longest) * (c / longest));
+  return std::isfinite(rr) ? (std::min)(1., rr) : 0.;
+}
+
 } // namespace internal
 } // namespace Advancing_front_mesh_2
 } // namespace CGAL

@@ -14,6 +14,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Tree_storage.h>
 
 #include <algorithm>
 #include <array>
@@ -49,12 +50,8 @@ class Dynamic_point_quadtree
   static constexpr std::int32_t absent = -1;
   static constexpr std::int32_t overflow_node = -2;
 
-  struct Entry
-  {
-    double x, y;
-    double reach; // see set_reach()
-    std::size_t id;
-  };
+  // a point with its reach (see set_reach()) as `extent`
+  typedef Tree_entry Entry;
 
   struct Node
   {
@@ -81,7 +78,7 @@ public:
              int max_depth = 24)
   {
     nodes_.clear();
-    free_blocks_.clear();
+    blocks_.clear();
     places_.clear();
     overflow_.clear();
     size_ = 0;
@@ -152,7 +149,7 @@ public:
     const std::array<double, 4> box = nodes_[0].box;
     // clear() would keep the capacity
     std::vector<Node>().swap(nodes_);
-    std::vector<std::int32_t>().swap(free_blocks_);
+    blocks_.release_memory();
     std::vector<Place>().swap(places_);
     std::vector<Entry>().swap(overflow_);
     std::vector<std::int32_t>().swap(stack_);
@@ -160,7 +157,7 @@ public:
     for(const Entry& e : all) {
       const std::size_t id = new_id[e.id];
       insert(id, e.x, e.y);
-      if(e.reach != 0) set_reach(id, e.reach);
+      if(e.extent != 0) set_reach(id, e.extent);
     }
   }
 
@@ -175,10 +172,10 @@ public:
     if(std::isnan(reach)) reach = std::numeric_limits<double>::infinity();
     const Place& pl = places_[id];
     if(pl.node == overflow_node) {
-      overflow_[pl.position].reach = reach;
+      overflow_[pl.position].extent = reach;
       return;
     }
-    nodes_[pl.node].entries[pl.position].reach = reach;
+    nodes_[pl.node].entries[pl.position].extent = reach;
     for(std::int32_t n = pl.node; n >= 0 && nodes_[n].max_reach < reach; n = nodes_[n].parent)
       nodes_[n].max_reach = reach;
   }
@@ -187,7 +184,7 @@ public:
   {
     CGAL_precondition(contains(id));
     const Place& pl = places_[id];
-    return (pl.node == overflow_node) ? overflow_[pl.position].reach : nodes_[pl.node].entries[pl.position].reach;
+    return (pl.node == overflow_node) ? overflow_[pl.position].extent : nodes_[pl.node].entries[pl.position].extent;
   }
 
   /// Calls `f(id, px, py, in_disk)` for the points within `radius` plus
@@ -207,7 +204,7 @@ public:
         f(e.id, e.x, e.y, true);
         return;
       }
-      const double reach = (radius + e.reach) * (1 + 1e-9) + pad;
+      const double reach = (radius + e.extent) * (1 + 1e-9) + pad;
       if(d2 <= reach * reach) f(e.id, e.x, e.y, false);
     });
   }
@@ -268,10 +265,10 @@ public:
       w.write(n.first_child);
       w.write(n.parent);
       w.write(n.depth);
-      save_entries(w, n.entries);
+      save_tree_entries(w, n.entries);
     }
-    save_entries(w, overflow_);
-    w.write_vector(free_blocks_);
+    save_tree_entries(w, overflow_);
+    blocks_.save(w);
   }
 
   /// Replaces the tree by one written by `save()`. The structure read is
@@ -312,7 +309,7 @@ public:
       load_entries(r, n.entries, number_of_places);
     }
     load_entries(r, t.overflow_, number_of_places);
-    r.read_vector(t.free_blocks_, number_of_nodes / 4);
+    t.blocks_.load(r, number_of_nodes);
     t.check_loaded(r);
     *this = std::move(t);
   }
@@ -364,7 +361,7 @@ private:
       // the front empties and fills again many times
       for(std::int32_t c = node.first_child; c < node.first_child + 4; ++c)
         std::vector<Entry>().swap(nodes_[c].entries);
-      free_blocks_.push_back(node.first_child);
+      blocks_.give_back(node.first_child, 4);
       node.first_child = no_child;
       node.max_reach = 0;
       n = node.parent;
@@ -373,14 +370,7 @@ private:
 
   void split(std::int32_t n)
   {
-    std::int32_t first;
-    if(!free_blocks_.empty()) {
-      first = free_blocks_.back();
-      free_blocks_.pop_back();
-    } else {
-      first = static_cast<std::int32_t>(nodes_.size());
-      nodes_.resize(nodes_.size() + 4);
-    }
+    const std::int32_t first = blocks_.take(nodes_, 4);
     const std::array<double, 4> b = nodes_[n].box;
     const double mx = 0.5 * (b[0] + b[2]), my = 0.5 * (b[1] + b[3]);
     for(int c = 0; c < 4; ++c) {
@@ -398,7 +388,7 @@ private:
       const std::int32_t c = first + child_index(b, e.x, e.y);
       places_[e.id] = Place{c, std::uint32_t(nodes_[c].entries.size())};
       nodes_[c].entries.push_back(e);
-      nodes_[c].max_reach = (std::max)(nodes_[c].max_reach, e.reach);
+      nodes_[c].max_reach = (std::max)(nodes_[c].max_reach, e.extent);
     }
     // a child that is still too full splits on its next insertion
   }
@@ -412,32 +402,10 @@ private:
     r.fail("corrupt point quadtree: " + what);
   }
 
-  static void save_entries(Binary_writer& w, const std::vector<Entry>& v)
-  {
-    // field by field: the padding of a struct would make the bytes (and the
-    // checksum) indeterminate
-    w.write<std::uint64_t>(v.size());
-    for(const Entry& e : v) {
-      w.write(e.x);
-      w.write(e.y);
-      w.write(e.reach);
-      w.write(e.id);
-    }
-  }
-
   static void load_entries(Binary_reader& r, std::vector<Entry>& v, std::uint64_t number_of_places)
   {
-    const std::uint64_t n = r.read<std::uint64_t>();
-    if(n > number_of_places) corrupt(r, "more entries in a leaf than ids");
-    v.clear();
-    for(std::uint64_t i = 0; i < n; ++i) {
-      Entry e;
-      e.x = r.read<double>();
-      e.y = r.read<double>();
-      e.reach = r.read<double>();
-      e.id = r.read<std::size_t>();
-      v.push_back(e);
-    }
+    load_tree_entries(r, v, number_of_places, "more entries in a leaf than ids",
+                      [&r](const char* what) { corrupt(r, what); });
   }
 
   // Checks that a loaded tree is one that the operations can have made, as
@@ -454,32 +422,7 @@ private:
       if(node.first_child != no_child && (node.first_child < 1 || static_cast<std::size_t>(node.first_child) + 4 > n))
         corrupt(r, "child index out of range");
     }
-    if(nodes_[0].parent != -1 || nodes_[0].depth != 0) corrupt(r, "root with a parent");
-    std::vector<char> seen(n, 0);
-    seen[0] = 1;
-    std::vector<std::int32_t> stack(1, 0);
-    while(!stack.empty()) {
-      const std::int32_t i = stack.back();
-      stack.pop_back();
-      const Node& node = nodes_[i];
-      if(node.first_child == no_child) continue;
-      if(!node.entries.empty()) corrupt(r, "inner node with entries");
-      for(std::int32_t c = node.first_child; c < node.first_child + 4; ++c) {
-        if(seen[c]) corrupt(r, "node reached twice");
-        seen[c] = 1;
-        if(nodes_[c].parent != i || nodes_[c].depth != node.depth + 1) corrupt(r, "wrong parent or depth");
-        stack.push_back(c);
-      }
-    }
-    for(std::int32_t first : free_blocks_) {
-      if(first < 1 || static_cast<std::size_t>(first) + 4 > n) corrupt(r, "free block out of range");
-      for(std::int32_t c = first; c < first + 4; ++c) {
-        if(seen[c]) corrupt(r, "free node in use or in two free blocks");
-        seen[c] = 1;
-        if(nodes_[c].first_child != no_child || !nodes_[c].entries.empty()) corrupt(r, "free node in use");
-      }
-    }
-    if(std::find(seen.begin(), seen.end(), 0) != seen.end()) corrupt(r, "node neither in the tree nor free");
+    check_tree_layout(nodes_, blocks_, [](const Node&) { return 4; }, [&r](const char* what) { corrupt(r, what); });
 
     std::size_t held = 0;
     for(const Place& pl : places_) {
@@ -505,7 +448,7 @@ private:
   }
 
   std::vector<Node> nodes_;
-  std::vector<std::int32_t> free_blocks_; // first nodes of blocks of 4 siblings merged away
+  Node_blocks<std::int32_t, 1> blocks_; // blocks of 4 siblings merged away, for reuse
   std::vector<Place> places_;
   std::vector<Entry> overflow_;
   mutable std::vector<std::int32_t> stack_;

@@ -14,6 +14,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Tree_storage.h>
 
 #include <algorithm>
 #include <array>
@@ -77,12 +78,9 @@ private:
   static constexpr int no_child = -1;
   static constexpr int overflow_node = -2;
 
-  // a circle as stored in a leaf (or in the overflow list)
-  struct Entry
-  {
-    double x, y, r;
-    Item_id id;
-  };
+  // a circle as stored in a leaf (or in the overflow list): its centre and
+  // its radius as `extent`
+  typedef Tree_entry Entry;
 
   struct Node
   {
@@ -118,8 +116,7 @@ public:
                                          std::abs(ymax), rmax, 1e-300});
     abs_pad_ = 1e-12 * magnitude;
     nodes_.clear();
-    free_blocks_[0].clear();
-    free_blocks_[1].clear();
+    blocks_.clear();
     items_.clear();
     free_items_.clear();
     overflow_.clear();
@@ -232,15 +229,14 @@ public:
     const std::array<double, 6> box = nodes_[0].box;
     // clear() would keep the capacity
     std::vector<Node>().swap(nodes_);
-    std::vector<int>().swap(free_blocks_[0]);
-    std::vector<int>().swap(free_blocks_[1]);
+    blocks_.release_memory();
     std::vector<Item>().swap(items_);
     std::vector<Item_id>().swap(free_items_);
     std::vector<Entry>().swap(overflow_);
     std::vector<int>().swap(stack_);
     reset(box[0], box[1], box[3], box[4], box[5], bucket_size_, max_depth_);
     items_.reserve(live.size());
-    for(const Live& l : live) renamed(l.payload, insert(l.entry.x, l.entry.y, l.entry.r, l.payload));
+    for(const Live& l : live) renamed(l.payload, insert(l.entry.x, l.entry.y, l.entry.extent, l.payload));
   }
 
   /// Releases the spare capacity of the arrays (for a tree that no longer
@@ -315,11 +311,10 @@ public:
       w.write(n.parent);
       w.write(n.depth);
       w.write(n.children);
-      save_entries(w, n.entries);
+      save_tree_entries(w, n.entries);
     }
-    save_entries(w, overflow_);
-    w.write_vector(free_blocks_[0]);
-    w.write_vector(free_blocks_[1]);
+    save_tree_entries(w, overflow_);
+    blocks_.save(w);
     w.write_vector(free_items_);
   }
 
@@ -369,8 +364,7 @@ public:
       load_entries(r, n.entries, number_of_items);
     }
     load_entries(r, t.overflow_, number_of_items);
-    r.read_vector(t.free_blocks_[0], number_of_nodes / 4);
-    r.read_vector(t.free_blocks_[1], number_of_nodes / 8);
+    t.blocks_.load(r, number_of_nodes);
     r.read_vector(t.free_items_, number_of_items);
     t.check_loaded(r);
     *this = std::move(t);
@@ -382,7 +376,7 @@ private:
   {
     // a circle whose lifted point could not be computed (overflow, NaN) is
     // always reported: the exact test downstream decides
-    if(!std::isfinite(e.r) || !std::isfinite(e.x) || !std::isfinite(e.y)) {
+    if(!std::isfinite(e.extent) || !std::isfinite(e.x) || !std::isfinite(e.y)) {
       f(items_[e.id].payload);
       return;
     }
@@ -393,7 +387,7 @@ private:
   void test_finite_entry(const Entry& e, double qx, double qy, double inflate, Function& f) const
   {
     const double dx = e.x - qx, dy = e.y - qy;
-    const double reach = (e.r + inflate) * (1 + 1e-9) + abs_pad_;
+    const double reach = (e.extent + inflate) * (1 + 1e-9) + abs_pad_;
     if(dx * dx + dy * dy <= reach * reach) f(items_[e.id].payload);
   }
 
@@ -427,7 +421,7 @@ private:
       // the leaves' buffers are freed here, not when they empty: a leaf at
       // the front empties and fills again many times
       for(int c = node.first_child; c < end; ++c) std::vector<Entry>().swap(nodes_[c].entries);
-      free_blocks_[node.children == 8].push_back(node.first_child);
+      blocks_.give_back(node.first_child, node.children);
       node.first_child = no_child;
       node.max_r = -1;
       n = node.parent;
@@ -447,21 +441,13 @@ private:
     const std::array<double, 6> b = nodes_[n].box;
     double r_lo = b[5], r_hi = b[2];
     for(const Entry& e : nodes_[n].entries) {
-      r_lo = (std::min)(r_lo, e.r);
-      r_hi = (std::max)(r_hi, e.r);
+      r_lo = (std::min)(r_lo, e.extent);
+      r_hi = (std::max)(r_hi, e.extent);
     }
     const double width = (std::max)(b[3] - b[0], b[4] - b[1]);
     const double mr = 0.5 * (r_lo + r_hi);
     const int children = (r_hi - r_lo > 0.5 * width && mr > b[2] && mr < b[5]) ? 8 : 4;
-    std::vector<int>& free_blocks = free_blocks_[children == 8];
-    int first;
-    if(!free_blocks.empty()) {
-      first = free_blocks.back();
-      free_blocks.pop_back();
-    } else {
-      first = static_cast<int>(nodes_.size());
-      nodes_.resize(nodes_.size() + children);
-    }
+    const int first = blocks_.take(nodes_, children);
     const double mx = 0.5 * (b[0] + b[3]), my = 0.5 * (b[1] + b[4]);
     nodes_[n].children = children;
     nodes_[n].r_split = mr;
@@ -478,11 +464,11 @@ private:
     moved.swap(nodes_[n].entries);
     nodes_[n].first_child = first;
     for(const Entry& e : moved) {
-      const int c = first + child_index(nodes_[n], e.x, e.y, e.r);
+      const int c = first + child_index(nodes_[n], e.x, e.y, e.extent);
       items_[e.id].node = c;
       items_[e.id].position = nodes_[c].entries.size();
       nodes_[c].entries.push_back(e);
-      nodes_[c].max_r = (std::max)(nodes_[c].max_r, e.r);
+      nodes_[c].max_r = (std::max)(nodes_[c].max_r, e.extent);
     }
     // no recursive split here: a child that is still too full splits on its
     // next insertion, which bounds the work of one insertion
@@ -497,32 +483,10 @@ private:
     r.fail("corrupt lifted circle octree: " + what);
   }
 
-  static void save_entries(Binary_writer& w, const std::vector<Entry>& v)
-  {
-    // field by field: the padding of a struct would make the bytes (and the
-    // checksum) indeterminate
-    w.write<std::uint64_t>(v.size());
-    for(const Entry& e : v) {
-      w.write(e.x);
-      w.write(e.y);
-      w.write(e.r);
-      w.write(e.id);
-    }
-  }
-
   static void load_entries(Binary_reader& r, std::vector<Entry>& v, std::uint64_t number_of_items)
   {
-    const std::uint64_t n = r.read<std::uint64_t>();
-    if(n > number_of_items) corrupt(r, "more entries in a leaf than items");
-    v.clear();
-    for(std::uint64_t i = 0; i < n; ++i) {
-      Entry e;
-      e.x = r.read<double>();
-      e.y = r.read<double>();
-      e.r = r.read<double>();
-      e.id = r.read<Item_id>();
-      v.push_back(e);
-    }
+    load_tree_entries(r, v, number_of_items, "more entries in a leaf than items",
+                      [&r](const char* what) { corrupt(r, what); });
   }
 
   // Checks that a loaded tree is one that the operations can have made, as
@@ -542,35 +506,8 @@ private:
           static_cast<std::size_t>(node.first_child) + static_cast<std::size_t>(node.children) > n))
         corrupt(r, "child index out of range");
     }
-    if(nodes_[0].parent != -1 || nodes_[0].depth != 0) corrupt(r, "root with a parent");
-    std::vector<char> seen(n, 0);
-    seen[0] = 1;
-    std::vector<int> stack(1, 0);
-    while(!stack.empty()) {
-      const int i = stack.back();
-      stack.pop_back();
-      const Node& node = nodes_[i];
-      if(node.first_child == no_child) continue;
-      if(!node.entries.empty()) corrupt(r, "inner node with entries");
-      for(int c = node.first_child; c < node.first_child + node.children; ++c) {
-        if(seen[c]) corrupt(r, "node reached twice");
-        seen[c] = 1;
-        if(nodes_[c].parent != i || nodes_[c].depth != node.depth + 1) corrupt(r, "wrong parent or depth");
-        stack.push_back(c);
-      }
-    }
-    for(int k = 0; k < 2; ++k) {
-      const int block = k ? 8 : 4;
-      for(int first : free_blocks_[k]) {
-        if(first < 1 || static_cast<std::size_t>(first) + block > n) corrupt(r, "free block out of range");
-        for(int c = first; c < first + block; ++c) {
-          if(seen[c]) corrupt(r, "free node in use or in two free blocks");
-          seen[c] = 1;
-          if(nodes_[c].first_child != no_child || !nodes_[c].entries.empty()) corrupt(r, "free node in use");
-        }
-      }
-    }
-    if(std::find(seen.begin(), seen.end(), 0) != seen.end()) corrupt(r, "node neither in the tree nor free");
+    check_tree_layout(nodes_, blocks_, [](const Node& node) { return node.children; },
+                      [&r](const char* what) { corrupt(r, what); });
 
     std::size_t alive = 0;
     for(const Item& it : items_) {
@@ -601,7 +538,7 @@ private:
   }
 
   std::vector<Node> nodes_;
-  std::array<std::vector<int>, 2> free_blocks_; // first nodes of merged blocks of 4 and 8 siblings
+  Node_blocks<int, 2> blocks_; // blocks of 4 and 8 siblings merged away, for reuse
   std::vector<Item> items_;
   std::vector<Item_id> free_items_;
   std::vector<Entry> overflow_;
