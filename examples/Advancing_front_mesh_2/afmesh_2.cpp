@@ -495,7 +495,8 @@ int run(const Options& opt)
        << ", \"triangles_removed\": " << st.triangles_removed
        << ", \"size_bound_raised\": " << st.size_bound_raised
        << ", \"triangle_octree_queries\": " << st.triangle_octree_queries
-       << ", \"edge_octree_queries\": " << st.edge_octree_queries
+       << ", \"constraint_index_queries\": " << st.constraint_index_queries
+       << ", \"edge_octree_queries\": " << st.constraint_index_queries
        << ", \"point_search_queries\": " << st.point_search_queries
        << ", \"incircle_tests\": " << st.incircle_tests
        << ", \"largest_front\": " << st.largest_front

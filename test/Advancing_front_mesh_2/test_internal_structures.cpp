@@ -5,7 +5,10 @@
 // a wrong answer there shows only as a bad mesh far from its cause. The
 // trees' checkpoints (save/load, exact to the order of the answers) and the
 // binary streams under them are tested here too.
+#include "afm_brute_force_indices.h"
 #include "afm_test_harness.h"
+
+#include <CGAL/Advancing_front_mesh_2/Kd_tree_point_index.h>
 
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
@@ -18,6 +21,7 @@
 #include <cstring>
 #include <limits>
 #include <cstdint>
+#include <map>
 #include <numeric>
 #include <random>
 #include <set>
@@ -1235,4 +1239,129 @@ AFM_TEST_CASE(test_internal_binary_io)
     AFM_CHECK(t.size() == 0);
   }
   AFM_CHECK(accepted > 0 && refused > 0);
+}
+
+namespace {
+
+// The answers of a point index against the truth: every point within the
+// radius reported in the disk, every point within its reach reported, and
+// nothing reported that is far from both (the padding is tiny).
+template <class Index>
+void check_point_index_answers(const Index& index, const std::vector<std::array<double, 3> >& pts,
+                               const std::vector<bool>& in, double qx, double qy, double r, const std::string& label)
+{
+  std::vector<int> seen(pts.size(), 0); // 1: reported outside, 2: in the disk
+  index.query_with_reach(qx, qy, r, [&](std::size_t id, double px, double py, bool in_disk) {
+    AFM_CHECK_MSG(id < pts.size() && in[id] && seen[id] == 0, label << ": point " << id << " reported wrongly");
+    AFM_CHECK_MSG(px == pts[id][0] && py == pts[id][1], label << ": point " << id << " with other coordinates");
+    seen[id] = in_disk ? 2 : 1;
+  });
+  for(std::size_t i = 0; i < pts.size(); ++i) {
+    const double d = std::hypot(pts[i][0] - qx, pts[i][1] - qy);
+    if(!in[i]) continue;
+    if(d <= r) AFM_CHECK_MSG(seen[i] == 2, label << ": point " << i << " in the disk missed");
+    else if(d <= r + pts[i][2]) AFM_CHECK_MSG(seen[i] != 0, label << ": point " << i << " within reach missed");
+    if(seen[i] == 2) AFM_CHECK_MSG(d <= r * (1 + 1e-6) + 1e-9, label << ": point " << i << " not in the disk");
+    if(seen[i] == 1) AFM_CHECK_MSG(d <= (r + pts[i][2]) * (1 + 1e-6) + 1e-9, label << ": point " << i << " too far");
+  }
+}
+
+} // namespace
+
+// The three models of AdvancingFrontPointIndex_2 (the quadtree, CGAL's
+// Kd_tree, the brute-force oracle of the tests) under the same random
+// sequence of insertions, removals, reaches, renumberings and queries, each
+// against the truth: a wrong answer here would only show as a bad mesh.
+AFM_TEST_CASE(test_internal_point_index_models_agree)
+{
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> coord(0, 1);
+  AFMI::Dynamic_point_quadtree quadtree;
+  CGAL::Advancing_front_mesh_2::Kd_tree_point_index kd_tree;
+  afm_test::Brute_force_point_index brute_force;
+  quadtree.reset(0, 0, 1, 1, 16);
+  kd_tree.reset(0, 0, 1, 1, 16);
+  brute_force.reset(0, 0, 1, 1, 16);
+  std::vector<std::array<double, 3> > pts(2000); // x, y, reach
+  std::vector<bool> in(pts.size(), false);
+  for(int step = 0; step < 40000; ++step) {
+    const std::size_t i = rng() % pts.size();
+    const int op = int(rng() % 10);
+    if(op < 4 && !in[i]) {
+      pts[i] = {{coord(rng), coord(rng), 0.}};
+      quadtree.insert(i, pts[i][0], pts[i][1]);
+      kd_tree.insert(i, pts[i][0], pts[i][1]);
+      brute_force.insert(i, pts[i][0], pts[i][1]);
+      in[i] = true;
+    } else if(op < 7 && in[i]) {
+      quadtree.remove(i);
+      kd_tree.remove(i);
+      brute_force.remove(i);
+      in[i] = false;
+    } else if(op < 9 && in[i]) {
+      pts[i][2] = 0.05 * coord(rng);
+      quadtree.set_reach(i, pts[i][2]);
+      kd_tree.set_reach(i, pts[i][2]);
+      brute_force.set_reach(i, pts[i][2]);
+      AFM_CHECK(kd_tree.reach(i) == pts[i][2] && brute_force.reach(i) == pts[i][2]);
+    } else if(op == 9 && step % 50 == 0) {
+      // renumbering reverses the ids
+      std::vector<std::size_t> new_id(pts.size());
+      for(std::size_t k = 0; k < pts.size(); ++k) new_id[k] = pts.size() - 1 - k;
+      quadtree.renumber(new_id);
+      kd_tree.renumber(new_id);
+      brute_force.renumber(new_id);
+      std::reverse(pts.begin(), pts.end());
+      std::vector<bool> reversed(in.rbegin(), in.rend());
+      in.swap(reversed);
+    }
+    if(step % 40 == 0) {
+      const double qx = coord(rng), qy = coord(rng), r = 0.1 * coord(rng);
+      check_point_index_answers(quadtree, pts, in, qx, qy, r, "quadtree");
+      check_point_index_answers(kd_tree, pts, in, qx, qy, r, "Kd_tree");
+      check_point_index_answers(brute_force, pts, in, qx, qy, r, "brute force");
+      const std::size_t count = std::size_t(std::count(in.begin(), in.end(), true));
+      AFM_CHECK(quadtree.size() == count && kd_tree.size() == count && brute_force.size() == count);
+      for(std::size_t k = 0; k < pts.size(); k += 97)
+        AFM_CHECK(quadtree.contains(k) == in[k] && kd_tree.contains(k) == in[k] && brute_force.contains(k) == in[k]);
+    }
+  }
+  AFM_CHECK_MSG(kd_tree.number_of_rebuilds() > 10, "the Kd_tree was rebuilt " << kd_tree.number_of_rebuilds()
+                                                                              << " times only");
+}
+
+// The two models of AdvancingFrontCircleIndex_2 (the lifted circle octree,
+// the brute-force oracle) report the same circles for points and disks.
+AFM_TEST_CASE(test_internal_circle_index_models_agree)
+{
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> coord(0, 1);
+  AFMI::Lifted_circle_octree<int> octree;
+  afm_test::Brute_force_circle_index<int> brute_force;
+  octree.reset(-1, -1, 2, 2, 3, 32);
+  brute_force.reset(-1, -1, 2, 2, 3, 32);
+  std::map<int, std::pair<std::size_t, std::size_t> > items; // payload -> (octree item, brute-force item)
+  int next = 0;
+  for(int step = 0; step < 20000; ++step) {
+    if(items.empty() || rng() % 3 != 0) {
+      const double x = coord(rng), y = coord(rng), r = 0.05 * coord(rng) * (rng() % 50 == 0 ? 20 : 1);
+      items[next] = std::make_pair(octree.insert(x, y, r, next), brute_force.insert(x, y, r, next));
+      ++next;
+    } else {
+      auto it = items.begin();
+      std::advance(it, rng() % items.size());
+      octree.remove(it->second.first);
+      brute_force.remove(it->second.second);
+      items.erase(it);
+    }
+    if(step % 25 == 0) {
+      const double qx = coord(rng), qy = coord(rng), inflate = (step % 50 == 0) ? 0. : 0.02 * coord(rng);
+      std::set<int> a, b;
+      octree.query(qx, qy, inflate, [&a](int p) { AFM_CHECK(a.insert(p).second); });
+      brute_force.query(qx, qy, inflate, [&b](int p) { AFM_CHECK(b.insert(p).second); });
+      AFM_CHECK_MSG(a == b, "step " << step << ": the octree reports " << a.size() << " circles, the brute force "
+                                    << b.size());
+      AFM_CHECK(octree.size() == items.size() && brute_force.size() == items.size());
+    }
+  }
 }

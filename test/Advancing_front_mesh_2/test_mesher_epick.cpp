@@ -181,7 +181,7 @@ AFM_TEST_CASE(test_repaired_input_meshes)
   CDT cdt;
   const auto inserted = CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt, in);
   AFM_CHECK(inserted.merged_points == 1 && inserted.duplicate_segments == 1 && inserted.points_on_segments == 2);
-  CGAL::Advancing_front_mesher_2<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(
+  afm_test::Mesher<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(
     cdt, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K>(0.05));
   mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
   AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
@@ -206,7 +206,7 @@ AFM_TEST_CASE(test_segment_between_two_holes)
   in.holes = {{{1.25, 0.5}}, {{1.75, 0.5}}};
   CDT cdt;
   const auto inserted = CGAL::Advancing_front_mesh_2::IO::insert_poly(cdt, in);
-  CGAL::Advancing_front_mesher_2<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(
+  afm_test::Mesher<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(
     cdt, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K>(0.1));
   mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
   AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
@@ -247,15 +247,22 @@ AFM_TEST_CASE(test_determinism)
 AFM_TEST_CASE(test_class_api_equals_free_function)
 {
   const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.04);
-  const auto by_class = mesh_and_check<CDT>(in, uniform<K>(0.04), "class API");
+  mesh_and_check<CDT>(in, uniform<K>(0.04), "class API");
+  // the free function is the class with the default search structures
+  auto seeds = afm_test::seeds_of<CDT>(in);
+  CDT by_class;
+  afm_test::build_cdt(by_class, in);
+  CGAL::Advancing_front_mesher_2<CDT, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> > mesher(by_class,
+                                                                                                     uniform<K>(0.04));
+  mesher.set_seeds(seeds.begin(), seeds.end());
+  AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
   CDT cdt;
   afm_test::build_cdt(cdt, in);
-  auto seeds = afm_test::seeds_of<CDT>(in);
   const auto rc = CGAL::advancing_front_mesh_2(cdt, seeds.begin(), seeds.end(), 0.04);
   AFM_CHECK(rc == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
   const auto by_function = afm_test::extract_mesh(cdt);
-  AFM_CHECK(by_class.mesh.vertices == by_function.vertices);
-  AFM_CHECK(by_class.mesh.triangles == by_function.triangles);
+  AFM_CHECK(afm_test::extract_mesh(by_class).vertices == by_function.vertices);
+  AFM_CHECK(afm_test::extract_mesh(by_class).triangles == by_function.triangles);
 }
 
 AFM_TEST_CASE(test_free_function_size_forms)

@@ -87,7 +87,7 @@ std::size_t mesh_random_domain(std::uint64_t seed)
   } catch(const std::exception& e) {
     AFM_CHECK_MSG(false, label.str() << ": the generated domain was rejected: " << e.what());
   }
-  CGAL::Advancing_front_mesher_2<CDT, Random_size<K> > mesher(cdt, size);
+  afm_test::Mesher<CDT, Random_size<K> > mesher(cdt, size);
   mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
   mesher.set_pocket_priority(pockets);
   CGAL::Advancing_front_mesh_2::Mesh_return_code rc = CGAL::Advancing_front_mesh_2::MESH_COMPLETE;

@@ -62,7 +62,7 @@ void mesh_or_refuse(const std::string& file, const Poly_data& in, const std::str
   AFM_CHECK_MSG(error.empty(), file << ": refused: " << error);
   if(!error.empty()) return;
   afm_test::Boundary_graded_size<Epick> size(in, 0.3);
-  CGAL::Advancing_front_mesher_2<CDT, afm_test::Boundary_graded_size<Epick> > mesher(cdt, size);
+  afm_test::Mesher<CDT, afm_test::Boundary_graded_size<Epick> > mesher(cdt, size);
   mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
   AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
   AFM_CHECK_MSG(mesher.statistics().delaunay_repair_flips == 0, file);

@@ -6,8 +6,10 @@
 #include "afm_test_mesh.h"
 #include "afm_geometries.h"
 #include "afm_robustness_catalogue.h"
+#include "afm_brute_force_indices.h"
 
 #include <CGAL/Advancing_front_mesher_2.h>
+#include <CGAL/Advancing_front_mesh_2/Kd_tree_point_index.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -18,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <set>
@@ -30,6 +33,17 @@ namespace AFM = CGAL::Advancing_front_mesh_2;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef std::array<double, 6> Canonical_triangle;
+
+// The checkpoint tests need search structures that can be saved; with the
+// others (the Kd_tree and brute-force builds of the tests) they are skipped,
+// and test_streaming_checkpoints_need_saveable_indices checks that
+// checkpoints are refused instead.
+bool checkpoints_skipped()
+{
+  if(afm_test::Mesher<afm_test::Types<Epick>::CDT>::supports_checkpoints) return false;
+  std::cout << "  skipped: the " << afm_test::search_structures() << " cannot be saved\n";
+  return true;
+}
 
 // Records every call in order; its checkpoint state is the number of calls
 // so far, and a sink resumed from it starts from the recorded calls cut
@@ -129,7 +143,7 @@ void check_streaming(const afm_test::Poly_data& in, const Sizing& sizing, const 
     CDT cdt;
     afm_test::build_cdt(cdt, in);
     const auto seeds = afm_test::seeds_of<CDT>(in);
-    CGAL::Advancing_front_mesher_2<CDT, Sizing> mesher(cdt, sizing);
+    afm_test::Mesher<CDT, Sizing> mesher(cdt, sizing);
     mesher.set_seeds(seeds.begin(), seeds.end());
     mesher.refine_mesh();
     for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
@@ -143,7 +157,7 @@ void check_streaming(const afm_test::Poly_data& in, const Sizing& sizing, const 
   std::size_t finished = 0;
   Counting_visitor visitor;
   visitor.finished = &finished;
-  CGAL::Advancing_front_mesher_2<CDT, Sizing, Counting_visitor> mesher(cdt, sizing, visitor);
+  afm_test::Mesher<CDT, Sizing, Counting_visitor> mesher(cdt, sizing, visitor);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_output_sink(&sink);
   mesher.set_sweep_interval(sweep_interval);
@@ -194,7 +208,7 @@ AFM_TEST_CASE(test_streaming_memory_stays_near_the_front)
   afm_test::build_cdt(cdt, square);
   const auto seeds = afm_test::seeds_of<CDT>(square);
   AFM::Mesh_sink_2<Epick::Point_2> discard;
-  CGAL::Advancing_front_mesher_2<CDT> mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(0.004));
+  afm_test::Mesher<CDT> mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(0.004));
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_output_sink(&discard);
   mesher.refine_mesh();
@@ -223,7 +237,7 @@ void check_resume(const afm_test::Poly_data& in, const Sizing& sizing, const std
 {
   typedef typename afm_test::Types<K>::CDT CDT;
   typedef typename K::Point_2 Point;
-  typedef CGAL::Advancing_front_mesher_2<CDT, Sizing> Mesher;
+  typedef afm_test::Mesher<CDT, Sizing> Mesher;
   const std::filesystem::path dir = scratch_directory();
   const std::string file = (dir / "run.checkpoint").string();
   const auto seeds = afm_test::seeds_of<CDT>(in);
@@ -286,6 +300,7 @@ void check_resume(const afm_test::Poly_data& in, const Sizing& sizing, const std
 
 AFM_TEST_CASE(test_streaming_resume_equals_uninterrupted)
 {
+  if(checkpoints_skipped()) return;
   for(const afm_robustness::Case& c : afm_robustness::catalogue())
     check_resume<Epick>(c.in, afm_robustness::Case_size<Epick>(c), c.name, 20, 8);
   const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
@@ -305,7 +320,7 @@ std::string stopped_checkpoint(const std::string& file, double h, std::size_t sw
   Recording_sink<Epick::Point_2> sink;
   CDT cdt;
   afm_test::build_cdt(cdt, afm_geometry::square_with_circular_hole(1.0, 0.25, h));
-  CGAL::Advancing_front_mesher_2<CDT> mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(h));
+  afm_test::Mesher<CDT> mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(h));
   mesher.set_output_sink(&sink);
   mesher.set_sweep_interval(sweep_interval);
   mesher.set_checkpoint(every, file, "", true);
@@ -321,6 +336,7 @@ std::string stopped_checkpoint(const std::string& file, double h, std::size_t sw
 // proven a pure move by comparing checkpoints.
 AFM_TEST_CASE(test_streaming_checkpoint_is_deterministic)
 {
+  if(checkpoints_skipped()) return;
   const std::string file = (scratch_directory() / "deterministic.checkpoint").string();
   const std::string first = stopped_checkpoint(file, 0.01, 256, 4000);
   const std::string second = stopped_checkpoint(file, 0.01, 256, 4000);
@@ -332,9 +348,10 @@ AFM_TEST_CASE(test_streaming_checkpoint_is_deterministic)
 
 AFM_TEST_CASE(test_streaming_checkpoint_errors)
 {
+  if(checkpoints_skipped()) return;
   typedef afm_test::Types<Epick>::CDT CDT;
   typedef afm_test::Types<Epeck>::CDT CDT_exact;
-  typedef CGAL::Advancing_front_mesher_2<CDT> Mesher;
+  typedef afm_test::Mesher<CDT> Mesher;
   const std::filesystem::path dir = scratch_directory();
   const std::string file = (dir / "run.checkpoint").string();
   const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.05);
@@ -369,7 +386,7 @@ AFM_TEST_CASE(test_streaming_checkpoint_errors)
   {
     // another kernel
     CDT_exact empty;
-    CGAL::Advancing_front_mesher_2<CDT_exact> mesher(empty, AFM::Uniform_sizing_field_2<Epeck>(0.05));
+    afm_test::Mesher<CDT_exact> mesher(empty, AFM::Uniform_sizing_field_2<Epeck>(0.05));
     Recording_sink<Epeck::Point_2> s;
     mesher.set_output_sink(&s);
     bool thrown = false;
@@ -412,8 +429,9 @@ AFM_TEST_CASE(test_streaming_checkpoint_errors)
 // face, zero and the next index, and the checksum is made right again.
 AFM_TEST_CASE(test_streaming_checkpoint_consistency_is_checked)
 {
+  if(checkpoints_skipped()) return;
   typedef afm_test::Types<Epick>::CDT CDT;
-  typedef CGAL::Advancing_front_mesher_2<CDT> Mesher;
+  typedef afm_test::Mesher<CDT> Mesher;
   const std::filesystem::path dir = scratch_directory();
   const std::string file = (dir / "run.checkpoint").string();
   const std::string bad = (dir / "bad.checkpoint").string();
@@ -472,8 +490,9 @@ AFM_TEST_CASE(test_streaming_checkpoint_consistency_is_checked)
 // that never failed.
 AFM_TEST_CASE(test_streaming_checkpoint_write_failure_is_retried)
 {
+  if(checkpoints_skipped()) return;
   typedef afm_test::Types<Epick>::CDT CDT;
-  typedef CGAL::Advancing_front_mesher_2<CDT> Mesher;
+  typedef afm_test::Mesher<CDT> Mesher;
   const std::filesystem::path dir = scratch_directory();
   const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02);
   Recording_sink<Epick::Point_2> whole;
@@ -513,4 +532,62 @@ AFM_TEST_CASE(test_streaming_checkpoint_write_failure_is_retried)
   AFM_CHECK_MSG(sink.order == whole.order && sink.points == whole.points && sink.triangles == whole.triangles,
                 "the run that went on after the failed checkpoint differs from one that never failed");
   std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+// A mesher whose point index or circle index cannot be saved meshes in every
+// mode, streaming included, and refuses checkpoints with a clear error.
+template <class Mesher>
+void check_checkpoints_refused(const std::string& label)
+{
+  typedef typename Mesher::Triangulation CDT;
+  static_assert(!Mesher::supports_checkpoints, "the models cannot be saved");
+  const std::string file = (scratch_directory() / "refused.checkpoint").string();
+  auto refused = [&](const std::function<void()>& call, const std::string& what) {
+    try {
+      call();
+    } catch(const std::logic_error& e) {
+      AFM_CHECK_MSG(std::string(e.what()).find("checkpoints need search structures that can be saved") !=
+                      std::string::npos,
+                    label << ", " << what << ": " << e.what());
+      return;
+    }
+    AFM_CHECK_MSG(false, label << ", " << what << ": accepted");
+  };
+  const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.05);
+  CDT cdt;
+  afm_test::build_cdt(cdt, square);
+  const auto seeds = afm_test::seeds_of<CDT>(square);
+  Recording_sink<Epick::Point_2> sink;
+  Mesher mesher(cdt, AFM::Uniform_sizing_field_2<Epick>(0.05));
+  mesher.set_seeds(seeds.begin(), seeds.end());
+  mesher.set_output_sink(&sink);
+  mesher.set_sweep_interval(16);
+  refused([&] { mesher.set_checkpoint(100, file); }, "set_checkpoint()");
+  mesher.set_checkpoint(0, file); // switching them off is fine
+  refused([&] { mesher.write_checkpoint(file); }, "write_checkpoint()");
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  AFM_CHECK_MSG(!std::ifstream(file), label << ": a checkpoint was written");
+  const afm_check::Report report = afm_check::check_mesh(afm_test::to_pslg(square), sink.mesh());
+  AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
+  CDT empty;
+  Mesher resumed(empty, AFM::Uniform_sizing_field_2<Epick>(0.05));
+  resumed.set_output_sink(&sink);
+  refused([&] { resumed.resume(file); }, "resume()");
+  std::cout << "  " << label << ": " << sink.triangles.size() << " triangles streamed, checkpoints refused\n";
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_streaming_checkpoints_need_saveable_indices)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  typedef AFM::Uniform_sizing_field_2<Epick> Uniform;
+  static_assert(CGAL::Advancing_front_mesher_2<CDT>::supports_checkpoints, "the default models can be saved");
+  check_checkpoints_refused<CGAL::Advancing_front_mesher_2<CDT, Uniform, AFM::Default_visitor,
+                                                           AFM::Kd_tree_point_index> >("Kd_tree point index");
+  check_checkpoints_refused<CGAL::Advancing_front_mesher_2<CDT, Uniform, AFM::Default_visitor, CGAL::Default,
+                                                           afm_test::Brute_force_circle_index<> > >(
+    "brute-force circle index");
 }

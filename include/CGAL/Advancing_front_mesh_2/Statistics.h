@@ -87,10 +87,11 @@ struct Statistics
   std::size_t size_bound_raised = 0;
   /// queries of the circle octree (front triangles)
   std::size_t triangle_octree_queries = 0;
-  /// searches for the front edges near a disk (done by the point quadtree,
-  /// through the vertices' reaches) and queries of the constraint octree,
-  /// both for visibility; the name is from when front edges had an octree
-  std::size_t edge_octree_queries = 0;
+  /// queries of the index of the input constraints, which decide whether a
+  /// new point sees a triangle whose circle it breaks (Fig. 6); called
+  /// `edge_octree_queries` before 2026-11, when it also counted the searches
+  /// for front edges, which point_search_queries counts
+  std::size_t constraint_index_queries = 0;
   /// queries of the close-point search structure (the quadtree of active points)
   std::size_t point_search_queries = 0;
   /// exact predicate evaluations in the Delaunay closure (Merriam's iteration)

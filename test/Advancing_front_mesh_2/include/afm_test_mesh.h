@@ -10,6 +10,11 @@
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/Poly_data.h>
 
+#if defined(AFM_TEST_KD_TREE_POINT_INDEX) || defined(AFM_TEST_BRUTE_FORCE_INDICES)
+#include "afm_brute_force_indices.h"
+#include <CGAL/Advancing_front_mesh_2/Kd_tree_point_index.h>
+#endif
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -28,6 +33,28 @@
 namespace afm_test {
 
 typedef CGAL::Advancing_front_mesh_2::IO::Poly_data Poly_data;
+
+// The search structures the mesher is tested with: the defaults, or, in the
+// builds of the mesher's tests named after them (CMakeLists.txt), CGAL's
+// Kd_tree as point index, or the brute-force models of both concepts.
+#if defined(AFM_TEST_KD_TREE_POINT_INDEX)
+typedef CGAL::Advancing_front_mesh_2::Kd_tree_point_index Test_point_index;
+typedef CGAL::Default Test_circle_index;
+inline const char* search_structures() { return "Kd_tree point index"; }
+#elif defined(AFM_TEST_BRUTE_FORCE_INDICES)
+typedef Brute_force_point_index Test_point_index;
+typedef Brute_force_circle_index<> Test_circle_index;
+inline const char* search_structures() { return "brute-force indices"; }
+#else
+typedef CGAL::Default Test_point_index;
+typedef CGAL::Default Test_circle_index;
+inline const char* search_structures() { return "default indices"; }
+#endif
+
+template <class CDT,
+          class Sizing = CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<typename CDT::Geom_traits>,
+          class Visitor = CGAL::Advancing_front_mesh_2::Default_visitor>
+using Mesher = CGAL::Advancing_front_mesher_2<CDT, Sizing, Visitor, Test_point_index, Test_circle_index>;
 
 template <class K>
 struct Types
@@ -130,7 +157,7 @@ Result mesh_and_check(const Poly_data& in, const Sizing& sizing, const std::stri
   CDT cdt;
   build_cdt(cdt, in);
   auto seeds = seeds_of<CDT>(in);
-  CGAL::Advancing_front_mesher_2<CDT, Sizing> mesher(cdt, sizing);
+  Mesher<CDT, Sizing> mesher(cdt, sizing);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_pocket_priority(pocket_priority);
   const auto start = std::chrono::steady_clock::now();

@@ -230,7 +230,7 @@ bool Front_visibility<Front, C>::sees_point(const Point& p, double px, double py
   Phase_scope phase(ctx_.timer, VISIBILITY);
   const Point q = ctx_.scaling.to_user_point(qx, qy);
   bool blocked = false;
-  ++ctx_.stats.edge_octree_queries;
+  ++ctx_.stats.constraint_index_queries;
   constraint_circles.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * length(qx - px, qy - py),
                            [&](const Constraint& c) {
     if(blocked) return;

@@ -101,7 +101,6 @@ void Neighbourhood<Front>::gather(double x, double y, double r)
     }
   });
   ++ctx_.stats.point_search_queries;
-  ++ctx_.stats.edge_octree_queries;
 }
 
 // Is k, a front edge of `edges` or `new_edges()`, still on the front? It is
