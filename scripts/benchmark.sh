@@ -16,14 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
-bash scripts/install-deps.sh
-if ! dpkg-query -W -f='${Status}' libgmsh-dev 2>/dev/null | grep -q "install ok installed"; then
-  echo "installing: libgmsh-dev"
-  SUDO=""
-  [ "$(id -u)" -ne 0 ] && SUDO=sudo
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends libgmsh-dev
-fi
+bash scripts/install-deps.sh libgmsh-dev
 
 cmake -S . -B build-benchmark -DCMAKE_BUILD_TYPE=Release -DAFM_BUILD_BENCHMARKS=ON \
   -DAFM_BUILD_EXAMPLES=OFF -DAFM_BUILD_TESTS=OFF > /dev/null

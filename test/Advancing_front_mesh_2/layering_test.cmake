@@ -20,6 +20,7 @@ set(AFM_LAYERS
   "0 CGAL/Advancing_front_mesh_2/Mesh_sink_2.h"
   "0 CGAL/Advancing_front_mesh_2/Sizing_fields.h"
   "0 CGAL/Advancing_front_mesh_2/Statistics.h"
+  "0 CGAL/Advancing_front_mesh_2/version.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Binary_io.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Coordinate_scaling.h"

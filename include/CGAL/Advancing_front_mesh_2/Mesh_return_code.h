@@ -37,6 +37,23 @@ enum Mesh_return_code
   STOPPED_AT_CHECKPOINT
 };
 
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
+The name of a return code, as spelled in the enumeration
+(`"MESH_COMPLETE"`, ...): for logs and reports.
+*/
+inline const char* to_string(Mesh_return_code rc)
+{
+  switch(rc) {
+    case MESH_COMPLETE: return "MESH_COMPLETE";
+    case ITERATION_LIMIT_REACHED: return "ITERATION_LIMIT_REACHED";
+    case TIME_LIMIT_REACHED: return "TIME_LIMIT_REACHED";
+    case STOPPED_AT_CHECKPOINT: return "STOPPED_AT_CHECKPOINT";
+  }
+  return "unknown Mesh_return_code";
+}
+
 } // namespace Advancing_front_mesh_2
 } // namespace CGAL
 

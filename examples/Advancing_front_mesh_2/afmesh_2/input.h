@@ -1,0 +1,140 @@
+// afmesh_2: the input read, inserted into a triangulation, and the size
+// field made from it.
+#ifndef AFMESH_2_INPUT_H
+#define AFMESH_2_INPUT_H
+
+#include "options.h"
+
+#include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
+#include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_vertex_base_2.h>
+
+#include <chrono>
+#include <iostream>
+#include <iterator>
+#include <list>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace afmesh_2 {
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+template <class K>
+struct Types
+{
+  typedef CGAL::Triangulation_vertex_base_2<K> Vb;
+  typedef CGAL::Delaunay_mesh_face_base_2<K> Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+  // legal input has no crossing segments: refuse them instead of splitting
+  typedef CGAL::Constrained_Delaunay_triangulation_2<
+    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag> CDT;
+};
+
+// Either a uniform size or a background field, so that one mesher type
+// serves both.
+template <class K>
+struct Cli_sizing_field
+{
+  typedef AFM::Poisson_sizing_field_2<K> Background;
+  double uniform = 0;
+  std::shared_ptr<const Background> background;
+  typename K::FT operator()(const typename K::Point_2& p) const
+  {
+    return background ? (*background)(p) : typename K::FT(uniform);
+  }
+};
+
+// Where the time of the run went before meshing (seconds).
+struct Input_times
+{
+  double read = 0, boundary = 0, size_field = 0;
+};
+
+// The input as the mesher needs it.
+template <class K>
+struct Input
+{
+  typedef typename Types<K>::CDT CDT;
+  AFM::IO::Poly_data poly;
+  CDT cdt;
+  AFM::IO::Poly_insertion<CDT> inserted;
+  std::list<typename K::Point_2> seeds;
+  Cli_sizing_field<K> sizing;
+  Input_times times;
+};
+
+inline AFM::IO::Poly_data read_input(const std::string& file)
+{
+  try {
+    return AFM::IO::read_poly(file);
+  } catch(const AFM::IO::Poly_read_error& e) {
+    throw Input_error(e.what());
+  }
+}
+
+// The boundary, checked on the way (crossings, overlaps, open boundaries,
+// misplaced hole seeds: one line naming the file and line).
+template <class K>
+void insert_boundary(const Options& opt, Input<K>& in)
+{
+  try {
+    in.inserted = AFM::IO::insert_poly(in.cdt, in.poly);
+  } catch(const AFM::IO::Poly_read_error& e) {
+    throw Input_error(e.what());
+  }
+  in.seeds.assign(in.inserted.hole_seeds.begin(), in.inserted.hole_seeds.end());
+  const auto& ins = in.inserted;
+  if(ins.merged_points + ins.duplicate_segments + ins.points_on_segments > 0)
+    std::cerr << "afmesh_2: note: " << opt.input << ": " << ins.merged_points << " duplicate points merged, "
+              << ins.duplicate_segments << " duplicate segments dropped, " << ins.points_on_segments
+              << " points inside segments (split there)\n";
+}
+
+template <class K>
+std::vector<AFM::Size_source_2<K> > read_sources(const Options& opt)
+{
+  std::vector<AFM::Size_source_2<K> > sources;
+  if(opt.sources.empty()) return sources;
+  try {
+    for(const auto& s : AFM::IO::read_size_sources(opt.sources))
+      sources.emplace_back(typename K::Point_2(s[0], s[1]), s[2]);
+  } catch(const AFM::IO::Poly_read_error& e) {
+    throw Input_error(e.what());
+  }
+  return sources;
+}
+
+// --size alone: uniform; otherwise the Poisson background field of the
+// boundary spacing and the sources, bounded above by --size when given.
+template <class K>
+void make_size_field(const Options& opt, Input<K>& in)
+{
+  in.sizing.uniform = opt.size;
+  if(opt.has_size && opt.sources.empty()) return;
+  const std::vector<AFM::Size_source_2<K> > sources = read_sources<K>(opt);
+  std::vector<std::pair<typename K::Point_2, typename K::FT> > spacing;
+  AFM::boundary_spacing_2(in.cdt, std::back_inserter(spacing));
+  if(spacing.empty() && sources.empty())
+    throw Input_error(opt.input + ": no segments to derive a size from; give --size or --sources");
+  AFM::Poisson_sizing_field_options field_options;
+  field_options.limit_gradation = opt.gradation > 0;
+  if(opt.gradation > 0) field_options.gradation = opt.gradation;
+  if(opt.has_size) field_options.max_size = opt.size;
+  in.sizing.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
+}
+
+} // namespace afmesh_2
+
+#endif // AFMESH_2_INPUT_H

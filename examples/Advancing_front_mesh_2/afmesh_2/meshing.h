@@ -1,0 +1,164 @@
+// afmesh_2: the mesher set up from the options and run, in memory or
+// streaming to the outputs, and the smoothing after it.
+#ifndef AFMESH_2_MESHING_H
+#define AFMESH_2_MESHING_H
+
+#include "input.h"
+#include "options.h"
+#include "resume.h"
+
+#include <CGAL/Advancing_front_mesher_2.h>
+#include <CGAL/Advancing_front_mesh_2/IO/Streaming_mesh_writer.h>
+#include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace afmesh_2 {
+
+// A progress bar on stderr, only when stderr is a terminal, redrawn at most
+// ten times a second.
+struct Progress_visitor : AFM::Default_visitor
+{
+  bool enabled = false;
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  void on_progress(double fraction)
+  {
+    if(!enabled || seconds_since(last) < 0.1) return;
+    last = std::chrono::steady_clock::now();
+    const int width = 40, filled = int(fraction * width);
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << std::fixed
+              << std::setprecision(1) << 100 * fraction << "%" << std::flush;
+  }
+  void done()
+  {
+    if(enabled) std::cerr << "\r" << std::string(50, ' ') << "\r" << std::flush;
+  }
+};
+
+template <class K>
+using Mesher = CGAL::Advancing_front_mesher_2<typename Types<K>::CDT, Cli_sizing_field<K>, Progress_visitor>;
+
+// The input read and inserted, and the size field made, with their times.
+template <class K>
+void load_input(const Options& opt, Input<K>& in)
+{
+  const auto t_start = std::chrono::steady_clock::now();
+  in.poly = read_input(opt.input);
+  in.times.read = seconds_since(t_start);
+  check_same_inputs(opt);
+  const auto t_cdt = std::chrono::steady_clock::now();
+  insert_boundary(opt, in);
+  in.times.boundary = seconds_since(t_cdt);
+  const auto t_field = std::chrono::steady_clock::now();
+  make_size_field(opt, in);
+  in.times.size_field = seconds_since(t_field);
+}
+
+// A checkpoint that cannot be written must show before any output is
+// touched, not after the first K triangles.
+inline void check_checkpoint_writable(const Options& opt)
+{
+  if(opt.checkpoint_every == 0) return;
+  const std::string tmp = opt.checkpoint_file + ".tmp";
+  if(!std::ofstream(tmp.c_str(), std::ios::out | std::ios::binary | std::ios::app))
+    throw Input_error(tmp + ": cannot write the checkpoint here");
+  std::remove(tmp.c_str());
+}
+
+// --stream: the writer of the outputs, new or resumed from the checkpoint,
+// becomes the mesher's sink; a resumed run loads the checkpoint.
+template <class K>
+std::unique_ptr<AFM::IO::Streaming_mesh_writer<typename K::Point_2> > start_streaming(const Options& opt,
+                                                                                    Mesher<K>& mesher)
+{
+  typedef AFM::IO::Streaming_mesh_writer<typename K::Point_2> Writer;
+  check_checkpoint_writable(opt);
+  std::unique_ptr<Writer> writer;
+  try {
+    if(opt.resume.empty()) {
+      std::vector<std::string> outputs = opt.outputs;
+      // the writer's state in a checkpoint names them
+      if(opt.checkpoint_every > 0)
+        for(std::string& out : outputs) out = absolute_path(out);
+      writer.reset(new Writer(outputs));
+    } else {
+      writer = Writer::resume(Mesher<K>::read_checkpoint_info(opt.resume).sink_state);
+    }
+  } catch(const std::exception& e) {
+    throw Input_error((opt.resume.empty() ? std::string("output") : opt.resume) + ": " + e.what());
+  }
+  mesher.set_output_sink(writer.get());
+  if(!opt.resume.empty()) {
+    try {
+      mesher.resume(opt.resume);
+    } catch(const std::runtime_error& e) {
+      throw Input_error(e.what());
+    }
+  }
+  if(opt.checkpoint_every > 0)
+    mesher.set_checkpoint(opt.checkpoint_every, opt.checkpoint_file, opt.arguments, opt.stop_after_checkpoint);
+  return writer;
+}
+
+template <class K>
+void configure(const Options& opt, const Input<K>& in, Mesher<K>& mesher)
+{
+  mesher.set_seeds(in.seeds.begin(), in.seeds.end());
+  mesher.set_pocket_priority(!opt.no_pocket_priority);
+  mesher.set_time_limit(opt.time_limit);
+  mesher.set_iteration_limit(opt.max_steps);
+}
+
+// Runs the mesher; false (after saying why on stderr) when a checkpoint
+// could not be written: the outputs stay as they are, and a resume from the
+// previous checkpoint cuts them back to it.
+template <class K>
+bool run_mesher(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_code& rc)
+{
+  try {
+    rc = mesher.refine_mesh();
+  } catch(const AFM::Checkpoint_error& e) {
+    mesher.visitor().done();
+    std::cerr << program << ": error: " << e.what() << "; the outputs are incomplete";
+    if(mesher.statistics().checkpoints_written > 0)
+      std::cerr << "; afmesh_2 --resume " << opt.checkpoint_file << " goes on from the previous checkpoint";
+    std::cerr << "\n";
+    return false;
+  }
+  if(rc == AFM::TIME_LIMIT_REACHED || rc == AFM::ITERATION_LIMIT_REACHED)
+    std::cerr << "afmesh_2: note: " << opt.input << ": "
+              << (rc == AFM::TIME_LIMIT_REACHED ? "--time-limit" : "--max-steps")
+              << " reached: the rest of the front was closed on existing points (valid, coarser there)\n";
+  mesher.visitor().done();
+  return true;
+}
+
+// --smooth N: the mesher's points move, the input's points (isolated ones
+// included) are held.
+template <class K>
+AFM::Smoothing_statistics smooth(const Options& opt, Input<K>& in)
+{
+  typedef typename Types<K>::CDT CDT;
+  if(opt.smooth == 0) return AFM::Smoothing_statistics();
+  const std::vector<typename CDT::Vertex_handle>& vh = in.inserted.vertices;
+  std::set<typename CDT::Vertex_handle> input_vertices(vh.begin(), vh.end());
+  auto held = boost::make_function_property_map<typename CDT::Vertex_handle>(
+    [&](typename CDT::Vertex_handle v) { return input_vertices.count(v) > 0; });
+  return CGAL::laplacian_smooth_mesh_2(
+    in.cdt, CGAL::parameters::number_of_iterations(opt.smooth).vertex_is_constrained_map(held));
+}
+
+} // namespace afmesh_2
+
+#endif // AFMESH_2_MESHING_H

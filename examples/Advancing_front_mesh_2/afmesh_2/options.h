@@ -1,0 +1,299 @@
+// afmesh_2: the command line, parsed and checked into Options.
+#ifndef AFMESH_2_OPTIONS_H
+#define AFMESH_2_OPTIONS_H
+
+#include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
+
+#include <boost/program_options.hpp>
+
+#include <CGAL/Advancing_front_mesh_2/version.h>
+#include <CGAL/version.h>
+
+#include <boost/version.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace afmesh_2 {
+
+namespace po = boost::program_options;
+namespace AFM = CGAL::Advancing_front_mesh_2;
+
+const char* const program = "afmesh_2";
+
+// Exit code 2: the command line is wrong.
+struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+// Exit code 1: an input file is wrong (the message names it, and its line).
+struct Input_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+struct Options
+{
+  std::string input;
+  double size = 0;
+  bool has_size = false;
+  std::string sources;
+  std::string grading = "0.2";
+  double gradation = AFM::Poisson_sizing_field_options::default_gradation; // 0: off
+  std::vector<std::string> outputs;
+  std::string kernel = "epick";
+  bool stats = false;
+  bool report = false;
+  bool no_pocket_priority = false;
+  double time_limit = 0;     // seconds of meshing, 0: none
+  std::size_t max_steps = 0; // front edges processed, 0: none
+  std::size_t smooth = 0;
+  std::string svg_color = "plain";
+  std::string histogram;
+  bool stream = false;
+  std::size_t checkpoint_every = 0; // triangles, 0: no checkpoints
+  std::string checkpoint_file;
+  bool stop_after_checkpoint = false;
+  std::string resume;               // checkpoint to resume from
+  std::string arguments;            // the run's own arguments, '\0'-separated, stored in checkpoints
+  std::string input_checksum, sources_checksum; // of the files a checkpointed run read
+};
+
+// What the command line gave, before it is checked.
+struct Command_line
+{
+  Options opt;
+  long long smooth = 0, max_steps = 0;
+  std::vector<std::string> checkpoint; // --checkpoint-every K FILE
+  po::variables_map vm;
+  po::parsed_options parsed{nullptr};
+};
+
+// An option taking exactly two values (K FILE): a multitoken option would
+// also take the input file given after them.
+class Two_tokens : public po::typed_value<std::vector<std::string> >
+{
+public:
+  explicit Two_tokens(std::vector<std::string>* store) : po::typed_value<std::vector<std::string> >(store) {}
+  unsigned min_tokens() const override { return 2; }
+  unsigned max_tokens() const override { return 2; }
+};
+
+inline bool ends_with(const std::string& s, const std::string& tail)
+{
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The options the user sees in --help.
+inline po::options_description visible_options(Command_line& c)
+{
+  Options& opt = c.opt;
+  po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
+                                  "Meshes the domain of a Triangle .poly file with the advancing-front\n"
+                                  "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
+                                  "length is uniform; otherwise it comes from a background field: the boundary\n"
+                                  "spacing and the point sources, diffused by a Poisson solve on a quadtree,\n"
+                                  "with a gradation limit, and bounded above by --size when given.\n\nOptions");
+  visible.add_options()
+    ("help,h", "print this help and exit")
+    ("version", "print the versions of afmesh_2 and of the libraries it was built with, and exit")
+    ("size", po::value<double>(&opt.size), "target edge length H: uniform, or the largest size with --sources")
+    ("sources", po::value<std::string>(&opt.sources),
+     "size sources, one 'x y h' per line ('#' comments): size h prescribed at (x, y)")
+    ("grading", po::value<std::string>(&opt.grading)->default_value("0.2"),
+     "gradation limit G of the background field: the size changes by at most G per unit length "
+     "along each axis; 'off' to switch it off")
+    ("output,o", po::value<std::vector<std::string> >(&opt.outputs),
+     "output file, format chosen by extension: .off .vtu .node/.ele .msh .svg (repeatable)")
+    ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
+     "CGAL kernel: epick (default), epeck or exact-rational")
+    ("smooth", po::value<long long>(&c.smooth)->default_value(0),
+     "N passes (0 to 1000) of guarded Laplacian smoothing and Delaunay edge swapping after meshing")
+    ("svg-color", po::value<std::string>(&opt.svg_color)->default_value("plain"),
+     "SVG outputs: 'plain', or 'quality' to colour triangles by radius ratio")
+    ("histogram", po::value<std::string>(&opt.histogram), "write the quality histograms as SVG to this file")
+    ("no-pocket-priority", po::bool_switch(&opt.no_pocket_priority),
+     "mesh the front's pockets in shortest-first order too: a little better quality "
+     "where patches meet, a front up to 4 times larger")
+    ("time-limit", po::value<double>(&opt.time_limit),
+     "stop meshing after this many seconds: the rest of the front is closed on existing points, the "
+     "mesh is valid but coarser there, and a note says so (the run ends without it too)")
+    ("max-steps", po::value<long long>(&c.max_steps),
+     "stop meshing after this many front edges, as --time-limit does")
+    ("stream", po::bool_switch(&opt.stream),
+     "write triangles to the outputs while meshing and drop them from memory, for meshes larger than "
+     "memory (not with .svg outputs, --smooth or --histogram; no quality figures)")
+    ("checkpoint-every", new Two_tokens(&c.checkpoint),
+     "K FILE: with --stream (implied), write the mesher's state to FILE after every K more triangles, "
+     "so that --resume FILE can finish an interrupted run")
+    ("stop-after-checkpoint", po::bool_switch(&opt.stop_after_checkpoint),
+     "stop right after the first checkpoint (to run a large mesh in several sessions)")
+    ("resume", po::value<std::string>(&opt.resume),
+     "FILE: continue the run whose checkpoint is FILE, with the options stored there; only "
+     "--checkpoint-every, --stop-after-checkpoint, --time-limit, --max-steps, --stats and --report may be given")
+    ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout")
+    ("report", po::bool_switch(&opt.report),
+     "print a readable quality summary (on stdout; on stderr with --stats)");
+  return visible;
+}
+
+// Reads `args` into `c`; returns the options --help shows.
+inline po::options_description read_command_line(const std::vector<std::string>& args, Command_line& c)
+{
+  po::options_description visible = visible_options(c);
+  po::options_description hidden;
+  hidden.add_options()("input", po::value<std::string>(&c.opt.input))
+    // written into checkpoints only (see stored_arguments())
+    ("input-checksum", po::value<std::string>(&c.opt.input_checksum))
+    ("sources-checksum", po::value<std::string>(&c.opt.sources_checksum));
+  po::options_description all;
+  all.add(visible).add(hidden);
+  po::positional_options_description pos;
+  pos.add("input", 1);
+  try {
+    c.parsed = po::command_line_parser(args).options(all).positional(pos).run();
+    po::store(c.parsed, c.vm);
+    po::notify(c.vm);
+  } catch(const po::error& e) {
+    throw Usage_error(e.what());
+  }
+  return visible;
+}
+
+inline void parse_checkpoint(const std::vector<std::string>& checkpoint, Options& opt)
+{
+  long long every = 0;
+  std::size_t used = 0;
+  if(checkpoint.size() == 2) {
+    try {
+      every = std::stoll(checkpoint[0], &used);
+    } catch(const std::exception&) {
+      used = 0;
+    }
+  }
+  if(checkpoint.size() != 2 || used != checkpoint[0].size() || every < 1 || checkpoint[1].empty())
+    throw Usage_error("--checkpoint-every takes a positive number of triangles K and a FILE");
+  // Boost hands over the next option when FILE is missing
+  if(checkpoint[1][0] == '-')
+    throw Usage_error("--checkpoint-every takes a positive number of triangles K and a FILE, not '" + checkpoint[1] +
+                      "'");
+  opt.checkpoint_every = std::size_t(every);
+  opt.checkpoint_file = checkpoint[1];
+  opt.stream = true;
+}
+
+// The limits of a session, checked: given now, they hold for this run only.
+inline void check_limits(const Command_line& c)
+{
+  if(c.vm.count("time-limit") && (!(c.opt.time_limit > 0) || !std::isfinite(c.opt.time_limit)))
+    throw Usage_error("--time-limit must be a positive number of seconds");
+  if(c.vm.count("max-steps") && c.max_steps < 1) throw Usage_error("--max-steps must be a positive count");
+}
+
+inline double parse_grading(const std::string& grading)
+{
+  if(grading == "off") return 0;
+  std::size_t used = 0;
+  double g = 0;
+  try {
+    g = std::stod(grading, &used);
+  } catch(const std::exception&) {
+    used = 0;
+  }
+  if(used != grading.size() || !(g > 0) || !std::isfinite(g))
+    throw Usage_error("--grading must be a positive number or 'off', not '" + grading + "'");
+  return g;
+}
+
+inline void check_output_formats(const Options& opt)
+{
+  for(const std::string& out : opt.outputs) {
+    const std::string ext = out.substr(out.find_last_of('.') == std::string::npos ? out.size()
+                                                                                 : out.find_last_of('.'));
+    if(ext != ".off" && ext != ".vtu" && ext != ".node" && ext != ".ele" && ext != ".msh" && ext != ".svg")
+      throw Usage_error("unknown output format '" + out + "' (use .off, .vtu, .node, .ele, .msh or .svg)");
+  }
+}
+
+// what streaming cannot do: it never holds the whole mesh
+inline void check_streaming(const Options& opt)
+{
+  if(!opt.stream) return;
+  if(opt.outputs.empty()) throw Usage_error("--stream needs an output (-o)");
+  for(const std::string& out : opt.outputs)
+    if(ends_with(out, ".svg")) throw Usage_error("--stream cannot write pictures (.svg): they need the whole mesh");
+  if(opt.smooth > 0) throw Usage_error("--stream cannot be combined with --smooth (smoothing needs the whole mesh)");
+  if(!opt.histogram.empty()) throw Usage_error("--stream cannot be combined with --histogram");
+}
+
+// The options of a new run (not --resume), checked and completed.
+inline void check_new_run(Command_line& c)
+{
+  Options& opt = c.opt;
+  if(opt.input.empty()) throw Usage_error("no input file given");
+  opt.has_size = c.vm.count("size") > 0;
+  if(opt.has_size && (!(opt.size > 0) || !std::isfinite(opt.size)))
+    throw Usage_error("--size must be a positive number");
+  // read as a signed number: Boost reads "-1" into an unsigned as its largest value
+  if(c.smooth < 0 || c.smooth > 1000) throw Usage_error("--smooth must be a number of passes from 0 to 1000");
+  opt.smooth = std::size_t(c.smooth);
+  check_limits(c);
+  opt.max_steps = std::size_t(c.max_steps);
+  if(opt.svg_color != "plain" && opt.svg_color != "quality")
+    throw Usage_error("--svg-color must be plain or quality, not '" + opt.svg_color + "'");
+  opt.gradation = parse_grading(opt.grading);
+  if(opt.kernel != "epick" && opt.kernel != "epeck" && opt.kernel != "exact-rational")
+    throw Usage_error("--kernel must be epick, epeck or exact-rational, not '" + opt.kernel + "'");
+  check_output_formats(opt);
+  if(!c.checkpoint.empty()) parse_checkpoint(c.checkpoint, opt);
+  if(opt.stop_after_checkpoint && opt.checkpoint_every == 0)
+    throw Usage_error("--stop-after-checkpoint needs --checkpoint-every");
+  check_streaming(opt);
+}
+
+// in resume.h
+Options resumed_run_options(const Command_line& now);
+std::string stored_arguments(const po::parsed_options& parsed, const Options& opt, bool resuming);
+
+inline void print_version()
+{
+  std::cout << program << " " << CGAL_ADVANCING_FRONT_MESH_2_VERSION_STR << " (Advancing_front_mesh_2), built with CGAL "
+            << CGAL_VERSION_STR << ", Boost " << BOOST_VERSION / 100000 << "." << BOOST_VERSION / 100 % 1000 << "."
+            << BOOST_VERSION % 100 << ", " << (sizeof(void*) * 8) << "-bit"
+#ifdef NDEBUG
+            << ", assertions off"
+#else
+            << ", assertions on"
+#endif
+            << "\n";
+}
+
+// The options of `args`; with `resuming`, the options a checkpoint stored.
+// --help and --version print and exit.
+inline Options parse(const std::vector<std::string>& args, bool resuming = false)
+{
+  Command_line c;
+  const po::options_description visible = read_command_line(args, c);
+  if(!resuming && (c.vm.count("input-checksum") || c.vm.count("sources-checksum")))
+    throw Usage_error("unrecognised option '--" + std::string(c.vm.count("input-checksum") ? "input" : "sources") +
+                      "-checksum'");
+  if(c.vm.count("help")) {
+    std::cout << visible << "\nExit codes: 0 success, 1 invalid input, 2 bad usage, 3 an output or checkpoint that "
+                            "could not be written, or an internal error.\n";
+    std::exit(EXIT_SUCCESS);
+  }
+  if(c.vm.count("version")) {
+    print_version();
+    std::exit(EXIT_SUCCESS);
+  }
+  if(!c.opt.resume.empty()) {
+    if(resuming) throw Usage_error("the checkpoint's stored options hold --resume");
+    return resumed_run_options(c);
+  }
+  check_new_run(c);
+  if(c.opt.checkpoint_every > 0) c.opt.arguments = stored_arguments(c.parsed, c.opt, resuming);
+  return c.opt;
+}
+
+} // namespace afmesh_2
+
+#endif // AFMESH_2_OPTIONS_H

@@ -1,0 +1,94 @@
+// afmesh_2: one run with kernel K, from the input to the outputs and the
+// reports. Returns the exit code of a run that did not throw: 0, or 3 when
+// an output or a checkpoint could not be written.
+#ifndef AFMESH_2_RUN_H
+#define AFMESH_2_RUN_H
+
+#include "input.h"
+#include "meshing.h"
+#include "options.h"
+#include "output.h"
+#include "report.h"
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+namespace afmesh_2 {
+
+// A streamed run: the mesh is in the files; no quality figures, no pictures.
+template <class K>
+int finish_streamed_run(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_code rc,
+                        AFM::IO::Streaming_mesh_writer<typename K::Point_2>* writer, double t_meshing,
+                        std::chrono::steady_clock::time_point t_start)
+{
+  const AFM::Statistics& st = mesher.statistics();
+  if(rc == AFM::STOPPED_AT_CHECKPOINT) {
+    std::cerr << "afmesh_2: note: stopped after writing the checkpoint " << opt.checkpoint_file << " ("
+              << st.number_of_faces << " triangles written so far); continue with: afmesh_2 --resume "
+              << opt.checkpoint_file << "\n";
+  } else if(writer != nullptr) {
+    try {
+      writer->close();
+    } catch(const std::exception& e) {
+      std::cerr << program << ": error: " << e.what() << "\n";
+      return 3;
+    }
+  }
+  if(opt.report) print_streamed_report(opt, st, t_meshing);
+  if(opt.stats) print_statistics(streamed_statistics_json(opt, rc, st, t_meshing, seconds_since(t_start)));
+  return 0;
+}
+
+// A run in memory: smoothing, outputs, quality figures.
+template <class K>
+int finish_run_in_memory(const Options& opt, Input<K>& in, const Mesher<K>& mesher, AFM::Mesh_return_code rc,
+                         Run_times t, std::chrono::steady_clock::time_point t_start)
+{
+  const bool want_quality = opt.stats || opt.report || !opt.histogram.empty();
+  AFM::Mesh_quality unsmoothed;
+  if(want_quality) unsmoothed = AFM::mesh_quality(in.cdt, in.sizing);
+  const auto t_smooth = std::chrono::steady_clock::now();
+  const AFM::Smoothing_statistics smoothing = smooth(opt, in);
+  t.smoothing = seconds_since(t_smooth);
+  const AFM::Mesh_quality q = want_quality && opt.smooth > 0 ? AFM::mesh_quality(in.cdt, in.sizing) : unsmoothed;
+  const auto t_write = std::chrono::steady_clock::now();
+  if(!write_outputs(opt, in.cdt, q)) return 3;
+  t.writing = seconds_since(t_write);
+  const AFM::Statistics& st = mesher.statistics();
+  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t);
+  t.total = seconds_since(t_start);
+  if(opt.stats) print_statistics(statistics_json(opt, in, rc, st, q, smoothing, t));
+  return 0;
+}
+
+template <class K>
+int run(const Options& opt)
+{
+  const auto t_start = std::chrono::steady_clock::now();
+  Input<K> in;
+  load_input(opt, in);
+  Progress_visitor progress;
+  progress.enabled = isatty(2) != 0;
+  // a resumed run meshes in an empty triangulation: the state comes from
+  // the checkpoint; the input was read again for the size field only
+  typename Types<K>::CDT resumed_cdt;
+  Mesher<K> mesher(opt.resume.empty() ? in.cdt : resumed_cdt, in.sizing, progress);
+  configure(opt, in, mesher);
+  std::unique_ptr<AFM::IO::Streaming_mesh_writer<typename K::Point_2> > writer;
+  if(opt.stream) writer = start_streaming<K>(opt, mesher);
+  const auto t_mesh = std::chrono::steady_clock::now();
+  AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
+  if(!run_mesher<K>(opt, mesher, rc)) return 3;
+  Run_times t;
+  t.meshing = seconds_since(t_mesh);
+  const AFM::Statistics& st = mesher.statistics();
+  if(rc != AFM::STOPPED_AT_CHECKPOINT && st.number_of_faces == 0)
+    throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
+  if(opt.stream) return finish_streamed_run<K>(opt, mesher, rc, writer.get(), t.meshing, t_start);
+  return finish_run_in_memory<K>(opt, in, mesher, rc, t, t_start);
+}
+
+} // namespace afmesh_2
+
+#endif // AFMESH_2_RUN_H
