@@ -3,16 +3,21 @@
 # test twice: in a Debug build with CGAL's assertions on, and in a Debug
 # build under AddressSanitizer + UndefinedBehaviorSanitizer; then builds the
 # libFuzzer targets with clang and runs each for AFM_FUZZ_SECONDS (default
-# 60) from its corpus.
+# 60) from its corpus. Two kinds of tests run in one build only, to keep
+# the run within CI's time: the mesher's tests with the other search
+# structures (Kd_tree, brute force) in the sanitizer build, which is also a
+# Debug build with CGAL's assertions on, and the consumer project of the
+# installed package (a build test) in the plain Debug build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh clang libclang-rt-14-dev
 jobs=${AFM_JOBS:-2}
 for variant in debug asan; do
-  sanitize=OFF
-  [ "$variant" = asan ] && sanitize=ON
+  sanitize=OFF models=OFF package=ON
+  [ "$variant" = asan ] && sanitize=ON models=ON package=OFF
   echo "=== $variant build ==="
-  cmake -S . -B "build/$variant" -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE=$sanitize > /dev/null
+  cmake -S . -B "build/$variant" -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE=$sanitize \
+    -DAFM_TEST_SEARCH_MODELS=$models -DAFM_TEST_PACKAGE=$package > /dev/null
   cmake --build "build/$variant" -j"$jobs"
   echo "=== $variant tests ==="
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
