@@ -362,11 +362,44 @@ private:
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   }
 
+  // The points and sizes in the unit frame of their extent (the field's
+  // internal frame), with the sizes as given (in the user's units).
+  struct Frame_input
+  {
+    std::vector<Point> bpts, spts;       // boundary points and sources, normalised
+    std::vector<double> bsize, ssize;    // their sizes, normalised
+    std::vector<double> raw_bsize, raw_ssize;
+  };
+
   static void build(Data& d, const std::vector<Point>& raw_bpts, const std::vector<double>& raw_bsize,
                     const std::vector<Point>& raw_spts, const std::vector<double>& ssize_in_units,
                     const Poisson_sizing_field_options& options)
   {
     const auto t0 = std::chrono::steady_clock::now();
+    Frame_input in;
+    if(!normalise(d, raw_bpts, raw_bsize, raw_spts, ssize_in_units, in)) return;
+    build_tree(d, in, options);
+    d.stats.tree_seconds = seconds_since(t0);
+    const auto t1 = std::chrono::steady_clock::now();
+    std::vector<char> fixed;
+    hold_prescribed_corners(d, in, fixed);
+    solve(d, fixed, options);
+    d.stats.solve_seconds = seconds_since(t1);
+    const auto t2 = std::chrono::steady_clock::now();
+    if(d.gradation > 0)
+      d.stats.corners_lowered_by_gradation = internal::limit_size_gradation(*d.tree, d.gradation, d.value, d.span);
+    for(double& v : d.value) v = (std::min)(d.max_size, (std::max)(d.min_size, v));
+    d.stats.gradation_seconds = seconds_since(t2);
+    d.stats.smallest_size = *std::min_element(d.value.begin(), d.value.end());
+    d.stats.largest_size = *std::max_element(d.value.begin(), d.value.end());
+  }
+
+  // The frame of the points' extent; false when they are one point, and
+  // the field is then the constant smallest size.
+  static bool normalise(Data& d, const std::vector<Point>& raw_bpts, const std::vector<double>& raw_bsize,
+                        const std::vector<Point>& raw_spts, const std::vector<double>& ssize_in_units,
+                        Frame_input& in)
+  {
     Bbox_2 extent;
     for(const Point& p : raw_bpts) extent += p.bbox();
     for(const Point& p : raw_spts) extent += p.bbox();
@@ -379,27 +412,34 @@ private:
       for(double s : ssize_in_units) h = (std::min)(h, s);
       d.constant = (std::min)(d.max_size, (std::max)(d.min_size, h));
       d.stats.smallest_size = d.stats.largest_size = d.constant;
-      return;
+      return false;
     }
     d.origin_x = extent.xmin();
     d.origin_y = extent.ymin();
     d.span = span;
-    auto normalise = [&](const std::vector<Point>& in, const std::vector<double>& sizes, std::vector<Point>& out,
-                         std::vector<double>& out_sizes) {
-      for(std::size_t i = 0; i < in.size(); ++i) {
-        out.emplace_back((in[i].x() - d.origin_x) / span, (in[i].y() - d.origin_y) / span);
+    auto to_frame = [&](const std::vector<Point>& pts, const std::vector<double>& sizes, std::vector<Point>& out,
+                        std::vector<double>& out_sizes) {
+      for(std::size_t i = 0; i < pts.size(); ++i) {
+        out.emplace_back((pts[i].x() - d.origin_x) / span, (pts[i].y() - d.origin_y) / span);
         out_sizes.push_back(sizes[i] / span);
       }
     };
-    std::vector<Point> bpts, spts;
-    std::vector<double> bsize, ssize;
-    normalise(raw_bpts, raw_bsize, bpts, bsize);
-    normalise(raw_spts, ssize_in_units, spts, ssize);
-    std::vector<Point> all(bpts);
-    all.insert(all.end(), spts.begin(), spts.end());
+    to_frame(raw_bpts, raw_bsize, in.bpts, in.bsize);
+    to_frame(raw_spts, ssize_in_units, in.spts, in.ssize);
+    in.raw_bsize = raw_bsize;
+    in.raw_ssize = ssize_in_units;
+    return true;
+  }
+
+  // The quadtree, refined about the boundary points to their spacing over
+  // `boundary_resolution`, and about each source to its resolution.
+  static void build_tree(Data& d, const Frame_input& in, const Poisson_sizing_field_options& options)
+  {
+    std::vector<Point> all(in.bpts);
+    all.insert(all.end(), in.spts.begin(), in.spts.end());
     const double root_width = 1.2; // Orthtree's default enlargement of the unit span
     const double finest_width = root_width / double(std::uint64_t(1) << Tree::max_depth);
-    const std::vector<double> wsrc = source_resolutions(bpts, spts, ssize, finest_width);
+    const std::vector<double> wsrc = source_resolutions(in.bpts, in.spts, in.ssize, finest_width);
 
     // Sources are looked up by box in a Kd-tree, so that many sources cost
     // little during refinement.
@@ -407,18 +447,18 @@ private:
     typedef Search_traits_2<Tree::K> Base_traits;
     typedef Search_traits_adapter<Point_and_id, Nth_of_tuple_property_map<0, Point_and_id>, Base_traits> Traits;
     std::vector<Point_and_id> sp;
-    for(std::size_t i = 0; i < spts.size(); ++i) sp.emplace_back(spts[i], i);
+    for(std::size_t i = 0; i < in.spts.size(); ++i) sp.emplace_back(in.spts[i], i);
     Kd_tree<Traits> source_tree(sp.begin(), sp.end());
     std::vector<Point_and_id> found;
 
-    const std::size_t nb = bpts.size();
+    const std::size_t nb = in.bpts.size();
     const double resolution = options.boundary_resolution;
     auto split = [&](const Bbox_2& box, std::size_t depth, const std::vector<std::size_t>& inside) {
       if(depth < 3) return true; // a minimal resolution everywhere
       const double width = box.xmax() - box.xmin();
       for(std::size_t i : inside)
-        if(i < nb && width > resolution * bsize[i]) return true;
-      if(spts.empty()) return false;
+        if(i < nb && width > resolution * in.bsize[i]) return true;
+      if(in.spts.empty()) return false;
       found.clear();
       const Point lo(box.xmin() - 3 * width, box.ymin() - 3 * width);
       const Point hi(box.xmax() + 3 * width, box.ymax() + 3 * width);
@@ -426,7 +466,7 @@ private:
       for(const Point_and_id& f : found) {
         const std::size_t s = boost::get<1>(f);
         if(width <= wsrc[s]) continue;
-        const Point& c = spts[s];
+        const Point& c = in.spts[s];
         const double dx = (std::max)({box.xmin() - c.x(), 0., c.x() - box.xmax()});
         const double dy = (std::max)({box.ymin() - c.y(), 0., c.y() - box.ymax()});
         if((std::max)(dx, dy) <= 3 * wsrc[s]) return true;
@@ -434,15 +474,17 @@ private:
       return false;
     };
     d.tree.reset(new Tree(all, split));
-    d.stats.tree_seconds = seconds_since(t0);
+    d.stats.number_of_leaves = d.tree->number_of_leaves();
+    d.stats.number_of_corners = d.tree->corners().size();
+  }
+
+  // The Dirichlet corners: sources first, they override boundary points.
+  static void hold_prescribed_corners(Data& d, const Frame_input& in, std::vector<char>& fixed)
+  {
     const Tree& tree = *d.tree;
     const std::vector<Tree::Corner>& corners = tree.corners();
-    d.stats.number_of_leaves = tree.number_of_leaves();
-    d.stats.number_of_corners = corners.size();
-
-    // Dirichlet corners: sources first, they override boundary points.
-    const auto t1 = std::chrono::steady_clock::now();
-    std::vector<char> fixed(corners.size(), 0), by_source(corners.size(), 0);
+    fixed.assign(corners.size(), 0);
+    std::vector<char> by_source(corners.size(), 0);
     d.value.assign(corners.size(), 0.);
     std::function<void(int, double)> hold = [&](int c, double h) {
       if(by_source[c]) d.value[c] = (std::min)(d.value[c], h);
@@ -455,43 +497,40 @@ private:
         hold(corners[c].parent[1], h);
       }
     };
-    for(std::size_t s = 0; s < spts.size(); ++s)
-      for(int c : tree.leaf_corners(spts[s])) hold(c, ssize_in_units[s]);
-    for(std::size_t i = 0; i < nb; ++i) {
+    for(std::size_t s = 0; s < in.spts.size(); ++s)
+      for(int c : tree.leaf_corners(in.spts[s])) hold(c, in.raw_ssize[s]);
+    for(std::size_t i = 0; i < in.bpts.size(); ++i) {
       int best = -1;
       double best_d = std::numeric_limits<double>::infinity();
-      for(int c : tree.leaf_corners(bpts[i])) {
+      for(int c : tree.leaf_corners(in.bpts[i])) {
         if(corners[c].is_hanging()) continue;
-        const double dd = squared_distance(corners[c].point, bpts[i]);
+        const double dd = squared_distance(corners[c].point, in.bpts[i]);
         if(dd < best_d) { best_d = dd; best = c; }
       }
       if(best < 0 || by_source[best]) continue;
-      d.value[best] = fixed[best] ? (std::min)(d.value[best], raw_bsize[i]) : raw_bsize[i];
+      d.value[best] = fixed[best] ? (std::min)(d.value[best], in.raw_bsize[i]) : in.raw_bsize[i];
       fixed[best] = 1;
     }
     d.stats.number_of_fixed_corners = std::size_t(std::count(fixed.begin(), fixed.end(), 1));
-    if(options.logarithmic) {
-      const std::vector<double> prescribed = d.value;
-      for(std::size_t i = 0; i < d.value.size(); ++i)
-        if(fixed[i]) d.value[i] = std::log(d.value[i]);
-      internal::solve_laplace_on_quadtree(tree, fixed, d.value);
-      // exp(log(h)) need not give h back to the last bit: prescribed corners
-      // take their size as given.
-      for(std::size_t i = 0; i < d.value.size(); ++i)
-        d.value[i] = fixed[i] ? prescribed[i] : std::exp(d.value[i]);
-      tree.interpolate_hanging_corners(d.value);
-    } else {
-      internal::solve_laplace_on_quadtree(tree, fixed, d.value);
-    }
-    d.stats.solve_seconds = seconds_since(t1);
+  }
 
-    const auto t2 = std::chrono::steady_clock::now();
-    if(d.gradation > 0)
-      d.stats.corners_lowered_by_gradation = internal::limit_size_gradation(tree, d.gradation, d.value, span);
-    for(double& v : d.value) v = (std::min)(d.max_size, (std::max)(d.min_size, v));
-    d.stats.gradation_seconds = seconds_since(t2);
-    d.stats.smallest_size = *std::min_element(d.value.begin(), d.value.end());
-    d.stats.largest_size = *std::max_element(d.value.begin(), d.value.end());
+  // Laplace's equation between the held corners, on the sizes or on their
+  // logarithms.
+  static void solve(Data& d, const std::vector<char>& fixed, const Poisson_sizing_field_options& options)
+  {
+    const Tree& tree = *d.tree;
+    if(!options.logarithmic) {
+      internal::solve_laplace_on_quadtree(tree, fixed, d.value);
+      return;
+    }
+    const std::vector<double> prescribed = d.value;
+    for(std::size_t i = 0; i < d.value.size(); ++i)
+      if(fixed[i]) d.value[i] = std::log(d.value[i]);
+    internal::solve_laplace_on_quadtree(tree, fixed, d.value);
+    // exp(log(h)) need not give h back to the last bit: prescribed corners
+    // take their size as given.
+    for(std::size_t i = 0; i < d.value.size(); ++i) d.value[i] = fixed[i] ? prescribed[i] : std::exp(d.value[i]);
+    tree.interpolate_hanging_corners(d.value);
   }
 
   std::shared_ptr<Data> data_;
