@@ -34,6 +34,7 @@ set(AFM_LAYERS
   "1 CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h"
   "1 CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h"
   "1 CGAL/Advancing_front_mesh_2/Kd_tree_point_index.h"
+  "1 CGAL/Advancing_front_mesh_2/internal/Checkpoint_support.h"
   # L2: the shared state, step 3
   "2 CGAL/Advancing_front_mesh_2/internal/Refinement_context.h"
   "2 CGAL/Advancing_front_mesh_2/internal/Front_2.h"

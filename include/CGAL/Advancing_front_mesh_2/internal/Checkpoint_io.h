@@ -15,6 +15,7 @@
 #include <CGAL/Advancing_front_mesh_2/Checkpoint_error.h>
 #include <CGAL/Advancing_front_mesh_2/Checkpoint_info.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Checkpoint_support.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_triangles.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_visibility.h>
@@ -40,26 +41,6 @@
 namespace CGAL {
 namespace Advancing_front_mesh_2 {
 namespace internal {
-
-// Whether a search structure can be written to a checkpoint: a point index
-// with save(Binary_writer&) and load(Binary_reader&), a circle index with
-// the same taking a payload writer and reader.
-template <class T, class = void>
-struct Has_point_index_io : std::false_type {};
-template <class T>
-struct Has_point_index_io<T, decltype(void(std::declval<const T&>().save(std::declval<Binary_writer&>())),
-                                      void(std::declval<T&>().load(std::declval<Binary_reader&>())))>
-  : std::true_type {};
-
-template <class T, class = void>
-struct Has_circle_index_io : std::false_type {};
-template <class T>
-struct Has_circle_index_io<
-  T, decltype(void(std::declval<const T&>().save(std::declval<Binary_writer&>(),
-                                                 std::declval<void (*)(Binary_writer&, const typename T::Payload&)>())),
-              void(std::declval<T&>().load(std::declval<Binary_reader&>(),
-                                           std::declval<typename T::Payload (*)(Binary_reader&)>())))>
-  : std::true_type {};
 
 // Section 4 of Mavriplis (1992), the restart facility: the whole state of
 // the mesher written to a file and read back, so that a resumed run takes
