@@ -1,0 +1,121 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_IO_INTERNAL_MESH_WRITER_COMMON_H
+#define CGAL_ADVANCING_FRONT_MESH_2_IO_INTERNAL_MESH_WRITER_COMMON_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Unique_hash_map.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cstddef>
+#include <fstream>
+#include <ios>
+#include <limits>
+#include <locale>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace IO {
+
+namespace internal {
+
+// What every writer needs: the in-domain triangles and only the vertices they
+// use, numbered in order of first appearance, so that two writes of the same
+// triangulation give identical files and the numbering of .node and .ele
+// agree.
+template <class CDT>
+struct Mesh_domain_view
+{
+  std::vector<std::array<double, 2> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<typename CDT::Face_handle> faces; // parallel to `triangles`
+};
+
+template <class CDT>
+void mesh_collect_domain(const CDT& cdt, Mesh_domain_view<CDT>& m)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+  const std::size_t none = (std::numeric_limits<std::size_t>::max)();
+  CGAL::Unique_hash_map<Vertex_handle, std::size_t> index(none, cdt.number_of_vertices());
+  for(typename CDT::Finite_faces_iterator fit = cdt.finite_faces_begin();
+      fit != cdt.finite_faces_end(); ++fit) {
+    if(!fit->is_in_domain())
+      continue;
+    Face_handle f = fit;
+    std::array<std::size_t, 3> t;
+    for(int i = 0; i < 3; ++i) {
+      const Vertex_handle v = f->vertex(i);
+      std::size_t& k = index[v];
+      if(k == none) {
+        k = m.points.size();
+        m.points.push_back(std::array<double, 2>{{CGAL::to_double(v->point().x()),
+                                                  CGAL::to_double(v->point().y())}});
+      }
+      t[i] = k;
+    }
+    m.triangles.push_back(t);
+    m.faces.push_back(f);
+  }
+}
+
+// Doubles are written with max_digits10 digits so that reading the file back
+// gives the very same values, and in the classic locale so that a global
+// locale set by the application cannot insert thousands separators or a
+// decimal comma. Callers save and restore the stream state around this.
+inline void mesh_set_exact_format(std::ostream& os)
+{
+  os.imbue(std::locale::classic());
+  os.flags(std::ios_base::dec);
+  os.precision(std::numeric_limits<double>::max_digits10);
+  os.width(0);
+}
+
+template <class Writer>
+void mesh_write_file(const std::string& file_name, Writer writer)
+{
+  // Binary mode: '\n' line ends on every platform, and VTU appends raw data.
+  std::ofstream os(file_name.c_str(), std::ios::out | std::ios::binary);
+  if(!os)
+    throw std::runtime_error("cannot write " + file_name);
+  writer(os);
+  os.flush();
+  if(!os)
+    throw std::runtime_error("cannot write " + file_name);
+}
+
+// The format of a file is chosen by its extension, in any case; a dot in a
+// directory name is not an extension.
+inline std::string mesh_lower_extension(const std::string& file_name)
+{
+  const std::size_t slash = file_name.find_last_of("/\\");
+  const std::size_t dot = file_name.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return std::string();
+  std::string ext = file_name.substr(dot + 1);
+  for(char& c : ext)
+    if(c >= 'A' && c <= 'Z')
+      c = static_cast<char>(c - 'A' + 'a');
+  return ext;
+}
+
+} // namespace internal
+
+} // namespace IO
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_IO_INTERNAL_MESH_WRITER_COMMON_H

@@ -1,0 +1,414 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_IO_INTERNAL_STREAMING_FILES_H
+#define CGAL_ADVANCING_FRONT_MESH_2_IO_INTERNAL_STREAMING_FILES_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Mesh_writer_common.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#if defined(_WIN32)
+#  include <io.h>
+#elif defined(__unix__) || defined(__APPLE__)
+#  include <fcntl.h>
+#  include <unistd.h>
+#  define CGAL_ADVANCING_FRONT_MESH_2_HAS_POSIX_FSYNC
+#endif
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+namespace IO {
+
+namespace internal {
+
+enum class Streaming_format { OFF, VTU, NODE_ELE, MSH };
+
+// Longest outputs of std::to_chars: "-2.2250738585072014e-308" has 24
+// characters, a 64-bit unsigned integer 20.
+constexpr std::size_t streaming_max_double_chars = 32;
+constexpr std::size_t streaming_max_uint_chars = 20;
+
+// The count in the first line of a .node or .ele file written while
+// streaming is not known until the end: it is reserved as a field this wide,
+// padded with spaces, and overwritten in place by close(). Triangle's
+// readers, like every other reader of these files, split on whitespace.
+constexpr std::size_t streaming_count_width = streaming_max_uint_chars;
+
+// The shortest decimal that reads back to the same double, in the "C"
+// locale whatever the global one is: files read back exactly, and are
+// about half the size of max_digits10 output for round numbers.
+inline char* streaming_format_double(char* p, double v)
+{
+  return std::to_chars(p, p + streaming_max_double_chars, v).ptr;
+}
+
+inline char* streaming_format_uint(char* p, std::uint64_t v)
+{
+  return std::to_chars(p, p + streaming_max_uint_chars, v).ptr;
+}
+
+// A file written from start to end through a large buffer of our own (the
+// meshes reach gigabytes, and stdio's per-call formatting and iostream's
+// sentries would dominate the run time). Keeps its own size, flushed bytes
+// plus buffered ones, which is what a checkpoint records.
+class Streaming_file
+{
+public:
+  explicit Streaming_file(const std::string& path) : path_(path) {}
+  Streaming_file(const Streaming_file&) = delete;
+  Streaming_file& operator=(const Streaming_file&) = delete;
+  ~Streaming_file() { abandon(); }
+
+  const std::string& path() const { return path_; }
+  std::uint64_t size() const { return size_; }
+  bool is_open() const { return f_ != nullptr; }
+
+  // Creates the file, or empties it.
+  void create()
+  {
+    open("wb");
+    size_ = 0;
+  }
+
+  // Continues a file that has just been truncated to `size` bytes.
+  void append(std::uint64_t size)
+  {
+    open("ab");
+    size_ = size;
+  }
+
+  // Room for `n` characters (at most the buffer capacity) at the end of the
+  // buffer; `commit()` then says how many were written.
+  char* reserve(std::size_t n)
+  {
+    if(capacity - used_ < n)
+      drain();
+    return buf_.get() + used_;
+  }
+
+  void commit(const char* end)
+  {
+    const std::size_t n = static_cast<std::size_t>(end - (buf_.get() + used_));
+    used_ += n;
+    size_ += n;
+  }
+
+  void put(const char* s, std::size_t n)
+  {
+    while(n > 0) {
+      const std::size_t k = (std::min)(n, capacity);
+      char* p = reserve(k);
+      std::memcpy(p, s, k);
+      commit(p + k);
+      s += k;
+      n -= k;
+    }
+  }
+
+  void put(const char* s) { put(s, std::strlen(s)); }
+  void put(const std::string& s) { put(s.data(), s.size()); }
+
+  void put_uint(std::uint64_t v)
+  {
+    char* p = reserve(streaming_max_uint_chars);
+    commit(streaming_format_uint(p, v));
+  }
+
+  void put_double(double v)
+  {
+    char* p = reserve(streaming_max_double_chars);
+    commit(streaming_format_double(p, v));
+  }
+
+  // Hands everything to the operating system; throws on a write error.
+  void flush()
+  {
+    drain();
+    if(std::fflush(f_) != 0 || std::ferror(f_))
+      fail();
+  }
+
+  // Makes everything durable, where the platform can tell.
+  void sync()
+  {
+    flush();
+#if defined(_WIN32)
+    if(::_commit(::_fileno(f_)) != 0)
+      fail();
+#elif defined(CGAL_ADVANCING_FRONT_MESH_2_HAS_POSIX_FSYNC)
+    // EINVAL: a special file that cannot be synchronized (/dev/null, a
+    // pipe), which is not an error of the output
+    if(::fsync(::fileno(f_)) != 0 && errno != EINVAL)
+      fail();
+#endif
+  }
+
+  // Flushes (and syncs if asked) and closes; throws on a write error.
+  void close(bool durable)
+  {
+    if(f_ == nullptr)
+      return;
+    if(durable)
+      sync();
+    else
+      flush();
+    std::FILE* f = f_;
+    f_ = nullptr;
+    if(std::fclose(f) != 0)
+      fail();
+  }
+
+  // Writes what it can and closes, without a word: for destructors and
+  // error paths, where the output is given up anyway (a resume truncates
+  // whatever came after the last checkpoint).
+  void abandon() noexcept
+  {
+    if(f_ == nullptr)
+      return;
+    if(used_ != 0 && std::fwrite(buf_.get(), 1, used_, f_) != used_) {
+      // nothing to do about it here
+    }
+    used_ = 0;
+    std::fclose(f_);
+    f_ = nullptr;
+  }
+
+  [[noreturn]] void fail()
+  {
+    used_ = 0; // not to be retried by abandon()
+    throw std::runtime_error("cannot write " + path_);
+  }
+
+  // 1 MiB: large enough for the kernel to see big sequential writes, small
+  // enough to allow a few files per output.
+  static constexpr std::size_t capacity = std::size_t(1) << 20;
+
+private:
+  void open(const char* mode)
+  {
+    abandon();
+    if(!buf_)
+      buf_.reset(new char[capacity]);
+    used_ = 0;
+    f_ = std::fopen(path_.c_str(), mode);
+    if(f_ == nullptr)
+      fail();
+    // our buffer is the only one: no copy through stdio's
+    std::setvbuf(f_, nullptr, _IONBF, 0);
+  }
+
+  void drain()
+  {
+    if(used_ != 0 && std::fwrite(buf_.get(), 1, used_, f_) != used_)
+      fail();
+    used_ = 0;
+  }
+
+  std::string path_;
+  std::FILE* f_ = nullptr;
+  std::unique_ptr<char[]> buf_;
+  std::size_t used_ = 0;
+  std::uint64_t size_ = 0;
+};
+
+// One output given by the user, and the two files written while streaming:
+// the vertex and triangle part files assembled by close() for OFF, VTU and
+// MSH, whose headers hold counts and whose vertices come before the
+// elements; the .node and .ele files themselves for Triangle's format,
+// whose only count is patched in place.
+struct Streaming_output
+{
+  Streaming_output(const std::string& given, Streaming_format f,
+                   const std::string& vertex_file, const std::string& triangle_file)
+    : name(given), format(f), vertices(vertex_file), triangles(triangle_file)
+  {}
+
+  std::string name;
+  Streaming_format format;
+  Streaming_file vertices;
+  Streaming_file triangles;
+};
+
+inline std::unique_ptr<Streaming_output> streaming_make_output(const std::string& name)
+{
+  const std::string ext = mesh_lower_extension(name);
+  Streaming_format format;
+  if(ext == "off")
+    format = Streaming_format::OFF;
+  else if(ext == "vtu")
+    format = Streaming_format::VTU;
+  else if(ext == "node" || ext == "ele")
+    format = Streaming_format::NODE_ELE;
+  else if(ext == "msh")
+    format = Streaming_format::MSH;
+  else
+    throw std::invalid_argument("Streaming_mesh_writer: the format of '" + name +
+                                "' cannot be streamed (streamed formats: .off, .vtu, "
+                                ".node/.ele, .msh)");
+  if(format == Streaming_format::NODE_ELE) {
+    const std::string base = name.substr(0, name.size() - ext.size() - 1);
+    return std::unique_ptr<Streaming_output>(
+      new Streaming_output(name, format, base + ".node", base + ".ele"));
+  }
+  return std::unique_ptr<Streaming_output>(
+    new Streaming_output(name, format, name + ".vertices.part", name + ".triangles.part"));
+}
+
+// Every file an output writes, the assembled one included.
+inline std::vector<std::string> streaming_files_of(const Streaming_output& o)
+{
+  std::vector<std::string> r{o.vertices.path(), o.triangles.path()};
+  if(o.format != Streaming_format::NODE_ELE)
+    r.push_back(o.name);
+  return r;
+}
+
+// Two outputs writing the same file would garble it: "a.node" and "a.ele"
+// are the same pair of files, "a.off" given twice is the same file.
+inline void streaming_check_distinct(const std::vector<std::unique_ptr<Streaming_output> >& outputs)
+{
+  std::vector<std::pair<std::string, std::string> > files; // normalized, given
+  for(const std::unique_ptr<Streaming_output>& o : outputs)
+    for(const std::string& f : streaming_files_of(*o))
+      files.emplace_back(std::filesystem::path(f).lexically_normal().string(), o->name);
+  std::sort(files.begin(), files.end());
+  for(std::size_t i = 1; i < files.size(); ++i)
+    if(files[i].first == files[i - 1].first)
+      throw std::invalid_argument("Streaming_mesh_writer: the outputs '" + files[i - 1].second +
+                                  "' and '" + files[i].second + "' would both write " +
+                                  files[i].first);
+}
+
+// The first line of a .node or .ele file, with the count padded to its
+// reserved width; `tail` is the rest of the line.
+inline void streaming_put_count_line(Streaming_file& f, std::uint64_t count, const char* tail)
+{
+  char line[streaming_count_width + 16];
+  char* p = streaming_format_uint(line, count);
+  while(p < line + streaming_count_width)
+    *p++ = ' ';
+  f.put(line, streaming_count_width);
+  f.put(tail, std::strlen(tail));
+}
+
+constexpr const char* streaming_node_tail = " 2 0 0\n";
+constexpr const char* streaming_ele_tail = " 3 0\n";
+
+// Rewrites the reserved count of a closed .node or .ele file.
+inline void streaming_patch_count(const std::string& path, std::uint64_t count)
+{
+  char field[streaming_count_width];
+  char* p = streaming_format_uint(field, count);
+  while(p < field + streaming_count_width)
+    *p++ = ' ';
+  std::FILE* f = std::fopen(path.c_str(), "r+b");
+  if(f == nullptr)
+    throw std::runtime_error("cannot write " + path);
+  bool ok = std::fwrite(field, 1, streaming_count_width, f) == streaming_count_width &&
+            std::fflush(f) == 0;
+#if defined(_WIN32)
+  ok = ok && ::_commit(::_fileno(f)) == 0;
+#elif defined(CGAL_ADVANCING_FRONT_MESH_2_HAS_POSIX_FSYNC)
+  ok = ok && (::fsync(::fileno(f)) == 0 || errno == EINVAL);
+#endif
+  ok = (std::fclose(f) == 0) && ok;
+  if(!ok)
+    throw std::runtime_error("cannot write " + path);
+}
+
+// Appends the whole content of `part`, which must be `size` bytes long.
+inline void streaming_copy_part(Streaming_file& out, const std::string& part, std::uint64_t size)
+{
+  // closed also when a write to `out` throws
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(part.c_str(), "rb"), &std::fclose);
+  if(!in)
+    throw std::runtime_error("cannot read " + part);
+  std::uint64_t copied = 0;
+  for(;;) {
+    char* p = out.reserve(Streaming_file::capacity);
+    const std::size_t n = std::fread(p, 1, Streaming_file::capacity, in.get());
+    out.commit(p + n);
+    copied += n;
+    if(n < Streaming_file::capacity)
+      break;
+  }
+  const bool ok = !std::ferror(in.get());
+  if(!ok || copied != size)
+    throw std::runtime_error("cannot read " + part + " (" +
+                             (ok ? "its size changed while the mesh was written" : "read error") + ")");
+}
+
+// Makes the directory entries of newly created files durable (POSIX only;
+// elsewhere, and on file systems that refuse it, this is skipped).
+inline void streaming_sync_directories(const std::vector<std::string>& files)
+{
+#if defined(CGAL_ADVANCING_FRONT_MESH_2_HAS_POSIX_FSYNC)
+  std::vector<std::string> dirs;
+  for(const std::string& f : files) {
+    std::string d = std::filesystem::path(f).parent_path().string();
+    if(d.empty())
+      d = ".";
+    if(std::find(dirs.begin(), dirs.end(), d) != dirs.end())
+      continue;
+    dirs.push_back(d);
+    const int fd = ::open(d.c_str(), O_RDONLY);
+    if(fd >= 0) {
+      if(::fsync(fd) != 0) {
+        // not all file systems can sync a directory; the files are synced
+      }
+      ::close(fd);
+    }
+  }
+#else
+  static_cast<void>(files);
+#endif
+}
+
+// The smallest number of bytes a vertex or triangle line takes in each
+// file ("0 0 0\n", "3 0 0 0\n", ...), and the header written at creation:
+// with them a corrupt count far beyond what the recorded file sizes can
+// hold is refused instead of being trusted.
+inline std::uint64_t streaming_min_line(Streaming_format f, bool triangles)
+{
+  if(!triangles)
+    return 6;
+  return f == Streaming_format::VTU ? 6 : 8;
+}
+
+inline std::uint64_t streaming_header_size(Streaming_format f, bool triangles)
+{
+  if(f != Streaming_format::NODE_ELE)
+    return 0;
+  return streaming_count_width + std::strlen(triangles ? streaming_ele_tail : streaming_node_tail);
+}
+
+} // namespace internal
+
+} // namespace IO
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#undef CGAL_ADVANCING_FRONT_MESH_2_HAS_POSIX_FSYNC
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_IO_INTERNAL_STREAMING_FILES_H
