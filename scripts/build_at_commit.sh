@@ -13,10 +13,12 @@ mkdir -p "$work"
 if [ "$rev" = worktree ]; then
   src=$root
 else
-  src=$work/src-$rev
+  commit=$(git -C "$root" rev-parse --verify "$rev^{commit}")
+  src=$work/src-$commit
   if [ ! -d "$src" ]; then
-    git -C "$root" worktree add --force --detach "$src" "$rev" > /dev/null 2>&1
+    git -C "$root" worktree add --force --detach "$src" "$commit" > /dev/null 2>&1
   fi
+  rev=$commit
 fi
 cmake -S "$src" -B "$work/build-$rev" -DCMAKE_BUILD_TYPE=Release -DAFM_BUILD_BENCHMARKS=ON \
   -DAFM_BUILD_TESTS=OFF > /dev/null

@@ -73,15 +73,15 @@ private:
     std::size_t operator()(const H& h) const { return std::hash<const void*>()(&*h); }
   };
 
-  // What steps 7-10 found for a point.
+  // What steps 7-8 found for a point besides the broken triangles.
   struct Broken_circles
   {
     bool reaches_finished = false;    // a finished triangle (streaming) is next to the cavity
     std::size_t finished_broken = 0;  // finished triangles whose circle holds p
-    double rho_new = 0;               // the raised size bound (step 10)
   };
 
-  Broken_circles collect_broken(Vid a, Vid b, const Point& p, double px, double py, double rho);
+  Broken_circles collect_broken(const Point& p, double px, double py);
+  double raised_bound(double rho, double rho_p);
   bool is_broken(Face_handle f, const Point& p, double px, double py);
   void carve();
   void restore(bool acceptable, std::size_t finished_broken);
@@ -124,7 +124,10 @@ bool Cavity<Front, V, T, P, Vis>::insert_point(Vid a, Vid b, double px, double p
   py = ctx_.iy(p);
   if(ctx_.pred.orientation(front_.point(a), front_.point(b), p) != LEFT_TURN) return false;
   Phase_scope cavity_phase(ctx_.timer, CAVITY);
-  const Broken_circles found = collect_broken(a, b, p, px, py, rho);
+  const Broken_circles found = collect_broken(p, px, py);
+  // the circle through a, b and p: the triangle p makes on the edge
+  const Circle cp = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), px, py);
+  const double rho_new = raised_bound(rho, cp.r);
   carve();
   // Triangles about p are accepted up to the local bound, and up to the
   // raised bound of step 10 when they are not needles: a large cavity is
@@ -134,9 +137,8 @@ bool Cavity<Front, V, T, P, Vis>::insert_point(Vid a, Vid b, double px, double p
   // sliver. Every accepted circle passes through p with radius at most
   // `accept_raised`, so the disk of twice that about p holds every point
   // that matters.
-  const Circle cp = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), px, py);
   const double accept = closure_tolerance * (std::max)(rho, cp.r);
-  const double accept_raised = closure_tolerance * found.rho_new;
+  const double accept_raised = closure_tolerance * rho_new;
   const double star_radius = (std::max)({2 * accept_raised, length(px - front_.x(a), py - front_.y(a)),
                                          length(px - front_.x(b), py - front_.y(b))}) * (1 + 1e-9);
   // Without a cavity the front is as it was when the edge's neighbourhood
@@ -166,11 +168,10 @@ bool Cavity<Front, V, T, P, Vis>::insert_point(Vid a, Vid b, double px, double p
 
 // Steps 7-8: the broken front triangles from the circle index, the
 // interior ones by walking across unconstrained edges; the finished
-// triangles (gone to the sink) next to the cavity, and those p breaks; and
-// step 10, the size bound raised to the largest broken circle.
+// triangles (gone to the sink) next to the cavity, and those p breaks.
 template <class Front, class V, class T, class P, class Vis>
 typename Cavity<Front, V, T, P, Vis>::Broken_circles
-Cavity<Front, V, T, P, Vis>::collect_broken(Vid a, Vid b, const Point& p, double px, double py, double rho)
+Cavity<Front, V, T, P, Vis>::collect_broken(const Point& p, double px, double py)
 {
   broken_.clear();
   broken_set_.clear();
@@ -203,12 +204,18 @@ Cavity<Front, V, T, P, Vis>::collect_broken(Vid a, Vid b, const Point& p, double
       }
     }
   }
-  // step 10: the size bound grows to the largest broken circle
-  const Circle cp = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), px, py);
-  found.rho_new = (std::max)(rho, cp.r);
-  for(Face_handle f : broken_) found.rho_new = (std::max)(found.rho_new, ctx_.circle_of(f).r);
-  if(found.rho_new > (std::max)(rho, cp.r)) ++ctx_.stats.size_bound_raised;
   return found;
+}
+
+// Step 10: the size bound grows to the largest broken circle (rho_p: the
+// radius of p's own triangle on the edge).
+template <class Front, class V, class T, class P, class Vis>
+double Cavity<Front, V, T, P, Vis>::raised_bound(double rho, double rho_p)
+{
+  double rho_new = (std::max)(rho, rho_p);
+  for(Face_handle f : broken_) rho_new = (std::max)(rho_new, ctx_.circle_of(f).r);
+  if(rho_new > (std::max)(rho, rho_p)) ++ctx_.stats.size_bound_raised;
+  return rho_new;
 }
 
 // The circle of face f contains p and p can see f, as constrained Delaunay
