@@ -685,7 +685,10 @@ void write_report(const Bench& b, const std::string& heap_check)
         "only counted and measured. Mesh_2 runs with the default shape bound B = 0.125 (about 20.7 degrees) and "
         "splits boundary segments; ours and Gmsh keep every input segment as one edge (Gmsh: transfinite lines of "
         "2 nodes; Mesh.MeshSizeFromPoints = MeshSizeExtendFromBoundary = MeshSizeFromCurvature = 0, other options "
-        "at their defaults, one thread).\n\n";
+        "at their defaults, one thread). **" + std::string(ours_kd_tree_name) + "**: our mesher with "
+        "`Kd_tree_point_index` (CGAL's `Kd_tree` with `Fuzzy_sphere` queries) instead of the default point "
+        "quadtree as close-point index, timed the same way; its mesh may differ from the default's where equal "
+        "candidates are taken in another order (count deviation in brackets).\n\n";
 
   std::vector<std::string> groups;
   for(const Case_result& c : b.results)
