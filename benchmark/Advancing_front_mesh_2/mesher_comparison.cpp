@@ -397,6 +397,7 @@ void run_ours_with_kd_tree(Case_result& cr, const Poly_data& in, const Sizing& s
   kd.cdt.reset();
   for(int r = 1; r < repeats; ++r) kd.run.seconds = (std::min)(kd.run.seconds, run_ours<Sizing, AFM::Kd_tree_point_index>(in, sizing).run.seconds);
   kd.run.runs = repeats;
+  kd.run.allocations = kd.allocations;
   std::cerr << "  " << ours_kd_tree_name << ": " << kd.run.triangles << " triangles, " << kd.run.seconds << " s ("
             << kd.run.seconds / ours.seconds << " times ours)\n";
   cr.runs.push_back(kd.run);
@@ -800,6 +801,11 @@ void write_report(const Bench& b, const std::string& heap_check)
          << fixed(o->triangles_per_second() / m->triangles_per_second(), 2) << " times Mesh_2's** ("
          << with_commas(std::size_t(o->triangles_per_second())) << " against "
          << with_commas(std::size_t(m->triangles_per_second())) << " triangles/s).\n";
+    if(const Run* kd = s6->find(ours_kd_tree_name))
+      if(o && o->seconds > 0)
+        os << "- With CGAL's `Kd_tree` as close-point index (`Kd_tree_point_index`) instead of our quadtree, the same "
+              "case takes " << fixed(kd->seconds / o->seconds, 2) << " times as long (" << seconds_text(kd->seconds)
+           << " against " << seconds_text(o->seconds) << ").\n";
   }
   if(const Case_result* c = s6 ? s6 : s5) {
     os << "- Heap allocations per triangle at " << size_class_text(c->nominal_triangles) << ":";
