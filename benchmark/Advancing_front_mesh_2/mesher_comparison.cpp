@@ -805,7 +805,7 @@ void write_report(const Bench& b, const std::string& heap_check)
       if(o && o->seconds > 0)
         os << "- With CGAL's `Kd_tree` as close-point index (`Kd_tree_point_index`) instead of our quadtree, the same "
               "case takes " << fixed(kd->seconds / o->seconds, 2) << " times as long (" << seconds_text(kd->seconds)
-           << " against " << seconds_text(o->seconds) << ").\n";
+           << " s against " << seconds_text(o->seconds) << " s).\n";
   }
   if(const Case_result* c = s6 ? s6 : s5) {
     os << "- Heap allocations per triangle at " << size_class_text(c->nominal_triangles) << ":";
