@@ -1253,12 +1253,17 @@ void check_point_index_answers(const Index& index, const std::vector<std::array<
   std::vector<int> seen(pts.size(), 0); // 1: reported outside, 2: in the disk
   index.query_with_reach(qx, qy, r, [&](std::size_t id, double px, double py, bool in_disk) {
     AFM_CHECK_MSG(id < pts.size() && in[id] && seen[id] == 0, label << ": point " << id << " reported wrongly");
-    AFM_CHECK_MSG(px == pts[id][0] && py == pts[id][1], label << ": point " << id << " with other coordinates");
+    const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    AFM_CHECK_MSG(same(px, pts[id][0]) && same(py, pts[id][1]), label << ": point " << id << " with other coordinates");
     seen[id] = in_disk ? 2 : 1;
   });
   for(std::size_t i = 0; i < pts.size(); ++i) {
     const double d = std::hypot(pts[i][0] - qx, pts[i][1] - qy);
     if(!in[i]) continue;
+    if(!std::isfinite(d)) {
+      AFM_CHECK_MSG(seen[i] == 2, label << ": point " << i << " (not finite) missed");
+      continue;
+    }
     if(d <= r) AFM_CHECK_MSG(seen[i] == 2, label << ": point " << i << " in the disk missed");
     else if(d <= r + pts[i][2]) AFM_CHECK_MSG(seen[i] != 0, label << ": point " << i << " within reach missed");
     if(seen[i] == 2) AFM_CHECK_MSG(d <= r * (1 + 1e-6) + 1e-9, label << ": point " << i << " not in the disk");
@@ -1289,6 +1294,9 @@ AFM_TEST_CASE(test_internal_point_index_models_agree)
     const int op = int(rng() % 10);
     if(op < 4 && !in[i]) {
       pts[i] = {{coord(rng), coord(rng), 0.}};
+      // a few points with non-finite coordinates, which every query reports
+      if(rng() % 200 == 0) pts[i][rng() % 2] = (rng() % 2) ? std::numeric_limits<double>::infinity()
+                                                             : std::numeric_limits<double>::quiet_NaN();
       quadtree.insert(i, pts[i][0], pts[i][1]);
       kd_tree.insert(i, pts[i][0], pts[i][1]);
       brute_force.insert(i, pts[i][0], pts[i][1]);
@@ -1328,6 +1336,18 @@ AFM_TEST_CASE(test_internal_point_index_models_agree)
   }
   AFM_CHECK_MSG(kd_tree.number_of_rebuilds() > 10, "the Kd_tree was rebuilt " << kd_tree.number_of_rebuilds()
                                                                               << " times only");
+  // emptied and used again, with a point that is not finite among the first
+  kd_tree.reset(0, 0, 1, 1, 16);
+  AFM_CHECK(kd_tree.size() == 0);
+  kd_tree.insert(0, std::numeric_limits<double>::infinity(), 0.5);
+  for(std::size_t k = 1; k < 300; ++k) kd_tree.insert(k, coord(rng), coord(rng));
+  std::size_t reported = 0;
+  bool infinite_reported = false;
+  kd_tree.query_with_reach(0.5, 0.5, 0.01, [&](std::size_t id, double, double, bool in_disk) {
+    ++reported;
+    infinite_reported = infinite_reported || (id == 0 && in_disk);
+  });
+  AFM_CHECK(infinite_reported && reported < 300 && kd_tree.size() == 300);
 }
 
 // The two models of AdvancingFrontCircleIndex_2 (the lifted circle octree,

@@ -95,14 +95,17 @@ public:
   {
     tree_.reset();
     tree_ids_.clear();
+    non_finite_.clear();
     dead_in_tree_ = 0;
     buffer_.clear();
     state_.clear();
     in_tree_.clear();
     points_.clear();
+    points_in_tree_.clear();
     reach_.clear();
     live_ = 0;
     max_reach_ = 0;
+    magnitude_ = 0;
   }
 
   bool contains(std::size_t id) const { return id < state_.size() && state_[id] != ABSENT; }
@@ -242,7 +245,10 @@ private:
       in_tree_[id] = false;
       if(state_[id] == IN_TREE) ids.push_back(id);
     }
-    for(std::size_t id : non_finite_) in_tree_[id] = false;
+    for(std::size_t id : non_finite_) {
+      in_tree_[id] = false;
+      if(state_[id] == IN_TREE) ids.push_back(id);
+    }
     ids.insert(ids.end(), buffer_.begin(), buffer_.end());
     std::vector<Point_and_id> pts;
     std::vector<std::size_t> finite_ids;
