@@ -74,6 +74,9 @@ faces flagged with `set_in_domain(true)`, exactly like the result of
 edge lengths. The sizing field gives the target edge length h(x) and the
 mesher uses rho(x) = h(x) / sqrt(3), the circumradius of the equilateral
 triangle of side h.
+
+The mesher is neither copyable nor movable (its parts refer to each other);
+build it where it is used, or hold it by pointer.
 */
 template <class CDT_,
           class SizingField_ = Advancing_front_mesh_2::Uniform_sizing_field_2<typename CDT_::Geom_traits>,
@@ -145,7 +148,12 @@ public:
     refiner_.invalidate();
   }
 
-  void clear_seeds() { set_seeds(refiner_.seeds.end(), refiner_.seeds.end()); }
+  void clear_seeds()
+  {
+    refiner_.seeds.clear();
+    refiner_.seeds_mark = false;
+    refiner_.invalidate();
+  }
 
   Seeds_const_iterator seeds_begin() const { return refiner_.seeds.begin(); }
   Seeds_const_iterator seeds_end() const { return refiner_.seeds.end(); }

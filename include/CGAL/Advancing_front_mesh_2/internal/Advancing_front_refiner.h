@@ -102,6 +102,11 @@ public:
       checkpoint_io_(ctx_, front_, stream_, triangles_, visibility_, pocket_priority_)
   {}
 
+  // The components refer to each other: a copy or a move would leave the new
+  // object's components pointing into the old one.
+  Advancing_front_refiner(const Advancing_front_refiner&) = delete;
+  Advancing_front_refiner& operator=(const Advancing_front_refiner&) = delete;
+
   // ---------------------------------------------------------- settings
   Seeds seeds;
   bool seeds_mark = false;
