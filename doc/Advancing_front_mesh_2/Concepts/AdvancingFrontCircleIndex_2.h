@@ -25,11 +25,11 @@ A model that can be saved and loaded (`save()` and `load()` below) lets the
 mesher write checkpoints; otherwise `Advancing_front_mesher_2::supports_checkpoints`
 is false.
 
-\cgalHasModelsBegin
-\cgalHasModels{CGAL::Advancing_front_mesh_2::internal::Lifted_circle_octree<Payload> (the default: a region octree over the lifted circles, which divides the radius axis only where a leaf's radii differ; it can be saved)}
-\cgalHasModelsEnd
-
-The tests add a brute-force model (`test/Advancing_front_mesh_2/include/afm_brute_force_indices.h`),
+The default model, chosen by `CGAL::Default`, is the package's internal
+lifted circle octree (`internal::Lifted_circle_octree`, not part of the
+documented interface): a region octree over the lifted circles, which divides
+the radius axis only where a leaf's radii differ; it can be saved. The tests
+add a brute-force model (`test/Advancing_front_mesh_2/include/afm_brute_force_indices.h`),
 the oracle the mesher's test suite also runs with.
 
 \sa `AdvancingFrontPointIndex_2`
@@ -37,14 +37,23 @@ the oracle the mesher's test suite also runs with.
 class AdvancingFrontCircleIndex_2 {
 public:
 
+/// \name Creation
+/// @{
+
+/// an empty index (the mesher calls `reset()` before the first insertion)
+AdvancingFrontCircleIndex_2();
+
+/// @}
+
 /// \name Types
 /// @{
 
 /// what a circle carries (default constructible and copyable)
 typedef unspecified_type Payload;
 
-/// the name of a circle held, convertible to `std::size_t`
-typedef unspecified_type Item_id;
+/// the name of a circle held: `std::size_t` (the mesher stores the ids of
+/// its circles as `std::size_t` and passes them back)
+typedef std::size_t Item_id;
 
 /// the same model for payload `P`, in `Rebind_payload<P>::Other`
 template <class P>
@@ -73,7 +82,8 @@ removes a circle. Its id may be returned again by a later insertion.
 */
 void remove(Item_id id);
 
-/// the number of circles held
+/// the number of circles held (not called by the mesher; for tests and
+/// diagnostics)
 std::size_t size() const;
 
 /// whether `id` names a circle held
@@ -114,6 +124,9 @@ void shrink_to_fit();
 /// @}
 
 /// \name Checkpoints (optional)
+/// The streams are the package's internal binary checkpoint streams, which
+/// have no stable interface yet: only the package's own models support
+/// checkpoints; a model written elsewhere leaves these two out.
 /// @{
 
 /*!

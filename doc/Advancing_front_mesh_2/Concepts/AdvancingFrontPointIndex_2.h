@@ -32,11 +32,13 @@ the mesher write checkpoints; with any other model
 `std::logic_error`.
 
 \cgalHasModelsBegin
-\cgalHasModels{CGAL::Advancing_front_mesh_2::internal::Dynamic_point_quadtree (the default: a bucketed point-region quadtree with O(1) removal and a reach bound per node; it can be saved)}
 \cgalHasModels{CGAL::Advancing_front_mesh_2::Kd_tree_point_index (CGAL's Kd_tree with Fuzzy_sphere queries; it cannot be saved)}
 \cgalHasModelsEnd
 
-The tests add a brute-force model (`test/Advancing_front_mesh_2/include/afm_brute_force_indices.h`),
+The default model, chosen by `CGAL::Default`, is the package's internal
+dynamic point quadtree (`internal::Dynamic_point_quadtree`, not part of the
+documented interface): a bucketed point-region quadtree with O(1) removal and
+a reach bound per node; it can be saved. The tests add a brute-force model (`test/Advancing_front_mesh_2/include/afm_brute_force_indices.h`),
 the oracle the mesher's test suite also runs with.
 
 \sa `AdvancingFrontCircleIndex_2`
@@ -112,6 +114,9 @@ void renumber(const Id_map& new_id);
 /// @}
 
 /// \name Checkpoints (optional)
+/// The streams are the package's internal binary checkpoint streams, which
+/// have no stable interface yet: only the package's own models support
+/// checkpoints; a model written elsewhere leaves these two out.
 /// @{
 
 /*!
