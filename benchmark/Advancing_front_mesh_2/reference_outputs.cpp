@@ -51,7 +51,7 @@ std::string counters(const AFM::Statistics& s)
   std::ostringstream os;
   os << s.front_edges_processed << ' ' << s.points_inserted << ' ' << s.triangles_closed_on_existing_points << ' '
      << s.forced_closures << ' ' << s.rejected_points << ' ' << s.triangles_around_new_points << ' '
-     << s.triangles_removed << ' ' << s.size_bound_raised << ' ' << s.triangle_octree_queries << ' '
+     << s.triangles_removed << ' ' << s.size_bound_raised << ' ' << s.broken_circle_queries << ' '
      << s.point_search_queries << ' ' << s.incircle_tests << ' ' << s.largest_front << ' ' << s.pockets << ' '
      << s.memory_compactions << ' ' << s.largest_active_vertices << ' ' << s.largest_live_triangles << ' '
      << s.delaunay_repair_flips << ' ' << s.stream_sweeps << ' ' << s.largest_triangles_in_memory << ' '

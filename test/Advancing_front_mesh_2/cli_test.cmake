@@ -25,6 +25,20 @@ if(json_error OR json_error2 OR NOT stats_triangles GREATER 100 OR NOT stats_cod
   message(FATAL_ERROR "--stats is not valid JSON (${json_error} ${json_error2}): ${LAST_OUT}")
 endif()
 
+# the statistics keys of before 2026-11 stay for one release, with their old meaning
+foreach(key broken_circle_queries triangle_octree_queries constraint_index_queries point_search_queries
+        edge_octree_queries)
+  string(JSON stat_${key} ERROR_VARIABLE json_error GET "${LAST_OUT}" statistics ${key})
+  if(json_error)
+    message(FATAL_ERROR "--stats has no statistics.${key}: ${LAST_OUT}")
+  endif()
+endforeach()
+math(EXPR old_edge_queries "${stat_constraint_index_queries} + ${stat_point_search_queries}")
+if(NOT stat_triangle_octree_queries EQUAL stat_broken_circle_queries OR NOT stat_broken_circle_queries GREATER 0
+   OR NOT stat_edge_octree_queries EQUAL old_edge_queries)
+  message(FATAL_ERROR "--stats: the old keys do not hold their old counts: ${LAST_OUT}")
+endif()
+
 # a file name with a quote and a backslash: the JSON escapes them
 file(COPY_FILE ${WORK_DIR}/sq.poly "${WORK_DIR}/we\"ird\\name.poly")
 expect_exit(0 ${AFMESH} "${WORK_DIR}/we\"ird\\name.poly" --size 0.05 -o ${WORK_DIR}/weird.off --stats)

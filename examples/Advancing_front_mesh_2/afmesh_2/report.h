@@ -143,10 +143,13 @@ inline Json mesher_statistics_json(const AFM::Statistics& st)
               {"triangles_around_new_points", st.triangles_around_new_points},
               {"triangles_removed", st.triangles_removed},
               {"size_bound_raised", st.size_bound_raised},
-              {"triangle_octree_queries", st.triangle_octree_queries},
+              {"broken_circle_queries", st.broken_circle_queries},
               {"constraint_index_queries", st.constraint_index_queries},
-              // the same count, under its name before 2026-11, for one release
-              {"edge_octree_queries", st.constraint_index_queries},
+              // the keys before 2026-11, with the same counts, for one release:
+              // edge_octree_queries counted the front-edge searches too, which
+              // are the point searches
+              {"triangle_octree_queries", st.broken_circle_queries},
+              {"edge_octree_queries", st.constraint_index_queries + st.point_search_queries},
               {"point_search_queries", st.point_search_queries},
               {"incircle_tests", st.incircle_tests},
               {"largest_front", st.largest_front},

@@ -85,14 +85,16 @@ struct Statistics
   /// point insertions in which step 10 raised the size bound (a broken
   /// triangle was larger than the bound)
   std::size_t size_bound_raised = 0;
-  /// queries of the circle octree (front triangles)
-  std::size_t triangle_octree_queries = 0;
+  /// searches of the front triangles' circle index for the circles a new
+  /// point breaks (step 7); called `triangle_octree_queries` before 2026-11
+  std::size_t broken_circle_queries = 0;
   /// queries of the index of the input constraints, which decide whether a
   /// new point sees a triangle whose circle it breaks (Fig. 6); called
   /// `edge_octree_queries` before 2026-11, when it also counted the searches
   /// for front edges, which point_search_queries counts
   std::size_t constraint_index_queries = 0;
-  /// queries of the close-point search structure (the quadtree of active points)
+  /// searches of the point index of active vertices, for the close points
+  /// and front edges of step 4
   std::size_t point_search_queries = 0;
   /// exact predicate evaluations in the Delaunay closure (Merriam's iteration)
   std::size_t incircle_tests = 0;

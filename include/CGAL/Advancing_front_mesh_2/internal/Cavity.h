@@ -175,7 +175,7 @@ Cavity<Front, V, T, P, Vis>::collect_broken(const Point& p, double px, double py
 {
   broken_.clear();
   broken_set_.clear();
-  ++ctx_.stats.triangle_octree_queries;
+  ++ctx_.stats.broken_circle_queries;
   {
     Phase_scope phase(ctx_.timer, CIRCLE_OCTREE);
     front_.front_triangle_circles.query(px, py, 0., [this, &p, px, py](Face_handle f) {
