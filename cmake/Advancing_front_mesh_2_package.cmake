@@ -14,13 +14,12 @@ install(TARGETS Advancing_front_mesh_2 EXPORT Advancing_front_mesh_2Targets)
 install(EXPORT Advancing_front_mesh_2Targets NAMESPACE CGAL:: DESTINATION ${AFM_CONFIG_DESTINATION})
 export(EXPORT Advancing_front_mesh_2Targets NAMESPACE CGAL::
        FILE ${CMAKE_CURRENT_BINARY_DIR}/Advancing_front_mesh_2Targets.cmake)
-if(TARGET Advancing_front_mesh_2_Poisson)
-  # its own file: the configuration includes it only when Eigen is found
-  install(TARGETS Advancing_front_mesh_2_Poisson EXPORT Advancing_front_mesh_2PoissonTargets)
-  install(EXPORT Advancing_front_mesh_2PoissonTargets NAMESPACE CGAL:: DESTINATION ${AFM_CONFIG_DESTINATION})
-  export(EXPORT Advancing_front_mesh_2PoissonTargets NAMESPACE CGAL::
-         FILE ${CMAKE_CURRENT_BINARY_DIR}/Advancing_front_mesh_2PoissonTargets.cmake)
-endif()
+# its own file: the configuration includes it only for COMPONENTS Poisson
+# with Eigen found
+install(TARGETS Advancing_front_mesh_2_Poisson EXPORT Advancing_front_mesh_2PoissonTargets)
+install(EXPORT Advancing_front_mesh_2PoissonTargets NAMESPACE CGAL:: DESTINATION ${AFM_CONFIG_DESTINATION})
+export(EXPORT Advancing_front_mesh_2PoissonTargets NAMESPACE CGAL::
+       FILE ${CMAKE_CURRENT_BINARY_DIR}/Advancing_front_mesh_2PoissonTargets.cmake)
 
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/Advancing_front_mesh_2ConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion ARCH_INDEPENDENT)

@@ -2,7 +2,9 @@
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=... -DCHECK=afm_check_mesh -P package_test.cmake
 # 1. `cmake --install` of the build tree into a prefix, and a consumer
 #    project that calls find_package(Advancing_front_mesh_2 COMPONENTS
-#    Poisson) against that prefix: configured, built and run;
+#    Poisson) against that prefix: configured, built and run,
+#    and a consumer of the core package alone, without COMPONENTS: no Eigen
+#    looked for, nothing of Eigen on its include path;
 # 2. the same consumer against the build tree (Advancing_front_mesh_2_DIR);
 # 3. a consumer that adds the repository with add_subdirectory(): the
 #    package must define its targets, force no build type and build none of
@@ -42,5 +44,6 @@ foreach(f include/CGAL/Advancing_front_mesher_2.h share/Advancing_front_mesh_2/c
   endif()
 endforeach()
 consumer(installed -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
+consumer(installed_core_only -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DAFM_CONSUMER_CORE_ONLY=ON)
 consumer(build_tree -DAdvancing_front_mesh_2_DIR=${BUILD_DIR})
 consumer(subdirectory -DAFM_CONSUMER_MODE=subdirectory -DAFM_SOURCE_DIR=${SOURCE_DIR})

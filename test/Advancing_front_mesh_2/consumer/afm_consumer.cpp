@@ -1,11 +1,15 @@
 // Meshes a square with a hole twice, at a uniform size and with the
-// Poisson background field: what a user of the installed package compiles.
+// Poisson background field (with AFM_CONSUMER_POISSON; without it, the core
+// package alone, which needs no Eigen: at a second uniform size): what a
+// user of the installed package compiles.
 // Writes the input (square.poly) and the meshes (uniform.off, graded.off)
 // to the directory given, for the validity checker.
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
+#ifdef AFM_CONSUMER_POISSON
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
+#endif
 #include <CGAL/Advancing_front_mesh_2/version.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -67,11 +71,15 @@ int main(int argc, char* argv[])
 
   CDT graded;
   insert(graded, pd);
+#ifdef AFM_CONSUMER_POISSON
   std::vector<std::pair<Point, K::FT> > spacing;
   CGAL::Advancing_front_mesh_2::boundary_spacing_2(graded, std::back_inserter(spacing));
   const CGAL::Advancing_front_mesh_2::Poisson_sizing_field_2<K> field(
     spacing, std::vector<CGAL::Advancing_front_mesh_2::Size_source_2<K> >{{Point(0.1, 0.1), 0.01}});
   CGAL::advancing_front_mesh_2(graded, holes.begin(), holes.end(), field);
+#else
+  CGAL::advancing_front_mesh_2(graded, holes.begin(), holes.end(), 0.03);
+#endif
 
   std::size_t a = 0, b = 0;
   for(auto f = uniform.finite_faces_begin(); f != uniform.finite_faces_end(); ++f) a += f->is_in_domain();
