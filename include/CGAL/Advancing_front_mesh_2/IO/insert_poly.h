@@ -18,7 +18,12 @@
 
 #include <CGAL/Delaunay_mesh_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <map>
 #include <string>
@@ -56,18 +61,75 @@ namespace internal {
 // The checks that need the graph in the triangulation, in the order
 // insert_poly() makes them.
 
+// Three of the points (by index into data.points), roughly the triangle of
+// largest area among them: the left- and rightmost point, and the one
+// farthest from the line through them (in doubles: only an order).
+inline std::array<std::size_t, 3> poly_spanning_triangle(const Poly_data& data, const std::vector<std::size_t>& ids)
+{
+  CGAL_precondition(!ids.empty());
+  auto x = [&](std::size_t i) { return data.points[i][0]; };
+  auto y = [&](std::size_t i) { return data.points[i][1]; };
+  std::size_t lo = ids.front(), hi = ids.front();
+  for(std::size_t i : ids) {
+    if(x(i) < x(lo) || (x(i) == x(lo) && y(i) < y(lo))) lo = i;
+    if(x(i) > x(hi) || (x(i) == x(hi) && y(i) > y(hi))) hi = i;
+  }
+  std::size_t far = lo;
+  double best = -1;
+  for(std::size_t i : ids) {
+    const double area = std::abs((x(hi) - x(lo)) * (y(i) - y(lo)) - (y(hi) - y(lo)) * (x(i) - x(lo)));
+    if(area > best) {
+      best = area;
+      far = i;
+    }
+  }
+  return {{lo, hi, far}};
+}
+
+// The points `order` (indices into `points`, each once) inserted into `cdt`,
+// their vertices stored in `vertices`. They go in in spatial (Hilbert)
+// order, each located from the one before: in file order, a boundary's long
+// collinear chains cost one flip per point already on the chain, quadratic
+// in all (a 1000 x 0.001 strip with 12,500 points per side took 3.3 s,
+// against 0.03 s sorted). A triangle spanning the input goes in first:
+// while the triangulation is one-dimensional, every insertion walks the
+// whole line (100,000 collinear points and three corners took 6.4 s).
+template <class CDT>
+void poly_insert_points(CDT& cdt, const Poly_data& data, const std::vector<typename CDT::Point>& points,
+                        std::vector<std::size_t> order, std::vector<typename CDT::Vertex_handle>& vertices)
+{
+  typedef typename CGAL::Pointer_property_map<typename CDT::Point>::const_type Point_map;
+  typedef CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, Point_map> Sort_traits;
+  if(order.empty()) return;
+  const std::array<std::size_t, 3> spanning = poly_spanning_triangle(data, order);
+  CGAL::spatial_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(points)));
+  for(std::size_t i : spanning) vertices[i] = cdt.insert(points[i]);
+  typename CDT::Face_handle hint = vertices[spanning[0]]->face();
+  for(std::size_t i : order) {
+    if(i == spanning[0] || i == spanning[1] || i == spanning[2]) continue;
+    vertices[i] = cdt.insert(points[i], hint);
+    hint = vertices[i]->face();
+  }
+}
+
 template <class CDT>
 void poly_insert(CDT& cdt, const Poly_graph& g, Poly_insertion<CDT>& result)
 {
   typedef typename CDT::Point Point;
   const Poly_data& data = g.data;
   const std::size_t n = data.points.size();
+  std::vector<Point> points;
+  std::vector<std::size_t> order; // the points not merged into an earlier one
+  points.reserve(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    points.push_back(Point(data.points[i][0], data.points[i][1]));
+    if(g.rep[i] == i) order.push_back(i);
+  }
+  result.vertices.resize(n);
+  poly_insert_points(cdt, data, points, std::move(order), result.vertices);
+  for(std::size_t i = 0; i < n; ++i) result.vertices[i] = result.vertices[g.rep[i]];
   // With the crossings and overlaps excluded, the triangulation only splits
   // segments at points already there.
-  result.vertices.resize(n);
-  for(std::size_t i = 0; i < n; ++i)
-    if(g.rep[i] == i) result.vertices[i] = cdt.insert(Point(data.points[i][0], data.points[i][1]));
-  for(std::size_t i = 0; i < n; ++i) result.vertices[i] = result.vertices[g.rep[i]];
   for(std::size_t i : g.kept) cdt.insert_constraint(result.vertices[g.seg_a(i)], result.vertices[g.seg_b(i)]);
   for(const auto& h : data.holes) result.hole_seeds.push_back(Point(h[0], h[1]));
 }
