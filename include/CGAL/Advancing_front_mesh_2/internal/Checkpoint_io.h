@@ -85,7 +85,7 @@ public:
   Checkpoint_info read(const std::string& content, const std::string& file_name);
 
 private:
-  static constexpr std::uint32_t version = 1;
+  static constexpr std::uint32_t version = 2; // 2: the coordinate origin
   static constexpr std::uint32_t null_face = 0xffffffffu, ghost_face = 0xfffffffeu, no_index = 0xffffffffu;
   static std::string magic() { return "Advancing_front_mesh_2 checkpoint"; }
   static std::string traits_name() { return typeid(typename Context::Geom_traits).name(); }
@@ -327,6 +327,8 @@ template <class F, class V, class T>
 void Checkpoint_io<F, V, T>::save_scalars(Binary_writer& w) const
 {
   w.write(ctx_.scaling.exponent());
+  w.write(ctx_.scaling.origin_x());
+  w.write(ctx_.scaling.origin_y());
   w.write(triangles_.domain_area);
   w.write(triangles_.meshed_area);
   w.write(front_.version_counter);
@@ -347,7 +349,13 @@ void Checkpoint_io<F, V, T>::save_scalars(Binary_writer& w) const
 template <class F, class V, class T>
 void Checkpoint_io<F, V, T>::load_scalars(Binary_reader& r)
 {
-  ctx_.scaling.set_exponent(r.read<int>());
+  {
+    const int exponent = r.read<int>();
+    const double origin_x = r.read<double>();
+    const double origin_y = r.read<double>();
+    if(!std::isfinite(origin_x) || !std::isfinite(origin_y)) r.fail("an origin that is not finite");
+    ctx_.scaling.set(exponent, origin_x, origin_y);
+  }
   triangles_.domain_area = r.read<double>();
   triangles_.meshed_area = r.read<double>();
   front_.version_counter = r.read<std::uint32_t>();

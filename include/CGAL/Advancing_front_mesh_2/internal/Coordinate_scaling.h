@@ -22,11 +22,21 @@ namespace CGAL {
 namespace Advancing_front_mesh_2 {
 namespace internal {
 
-// Internal coordinates and sizes are the user's divided by 2^exponent,
-// chosen so that a domain near 1e+300 or 1e-300 is meshed near 1: squared
-// lengths and circle radii then neither overflow nor underflow, and the
-// mesh is the one the same domain gets at unit scale. A power of two
-// scales every double exactly, so the internal coordinates stay exact.
+// Internal coordinates are the user's less an origin, divided by
+// 2^exponent; internal sizes are the user's divided by 2^exponent.
+//
+// The power of two, chosen so that a domain near 1e+300 or 1e-300 is meshed
+// near 1: squared lengths and circle radii then neither overflow nor
+// underflow, and the mesh is the one the same domain gets at unit scale. A
+// power of two scales every double exactly.
+//
+// The origin, for a domain far from (0, 0) compared with its size (a unit
+// square at 1e12): the searches pad their answers by a small fraction of
+// the coordinates' magnitude, which would otherwise be the whole domain's
+// width there and turn every search into a scan. The origin is taken on an
+// axis only when every coordinate of the domain's box lies within a factor
+// of two of it, so that the subtraction is exact (Sterbenz's lemma) for the
+// input points and for every point the mesher makes inside the box.
 template <class Point>
 class Coordinate_scaling
 {
@@ -34,43 +44,85 @@ public:
   typedef typename Kernel_traits<Point>::Kernel::FT FT;
 
   int exponent() const { return exponent_; }
-  void set_exponent(int e) { exponent_ = e; }
-
-  double to_internal(const FT& v) const
+  double origin_x() const { return origin_x_; }
+  double origin_y() const { return origin_y_; }
+  void set(int exponent, double origin_x, double origin_y)
   {
-    const double d = CGAL::to_double(v);
-    return exponent_ == 0 ? d : std::ldexp(d, -exponent_);
+    exponent_ = exponent;
+    origin_x_ = origin_x;
+    origin_y_ = origin_y;
   }
-  double ix(const Point& p) const { return to_internal(p.x()); }
-  double iy(const Point& p) const { return to_internal(p.y()); }
+
+  // a length (a size, a radius): scaled, not moved
+  double to_internal_length(const FT& v) const { return scaled(CGAL::to_double(v)); }
+  double ix(const Point& p) const { return scaled(CGAL::to_double(p.x()) - origin_x_); }
+  double iy(const Point& p) const { return scaled(CGAL::to_double(p.y()) - origin_y_); }
 
   Point to_user_point(double px, double py) const
   {
-    if(exponent_ == 0) return Point(px, py);
-    return Point(std::ldexp(px, exponent_), std::ldexp(py, exponent_));
+    if(exponent_ == 0) return Point(px + origin_x_, py + origin_y_);
+    return Point(std::ldexp(px, exponent_) + origin_x_, std::ldexp(py, exponent_) + origin_y_);
   }
 
-  // The exponent for the largest coordinate magnitude m of the
-  // triangulation's vertices: 0 while m lies within 2^(+-100) of 1, where
-  // nothing can overflow, and otherwise the one that brings m to [1, 2),
-  // unless some input coordinate would not survive the scaling exactly (a
-  // domain spanning 1e-300 to 1e+300).
+  // The origin and exponent for the triangulation's vertices.
   template <class Tr>
-  static int exponent_for(const Tr& tr)
+  static Coordinate_scaling for_triangulation(const Tr& tr)
+  {
+    double lo[2] = {0, 0}, hi[2] = {0, 0};
+    bool first = true;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+      const double c[2] = {CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())};
+      for(int k = 0; k < 2; ++k) {
+        lo[k] = first ? c[k] : (std::min)(lo[k], c[k]);
+        hi[k] = first ? c[k] : (std::max)(hi[k], c[k]);
+      }
+      first = false;
+    }
+    Coordinate_scaling s;
+    s.origin_x_ = origin_for(lo[0], hi[0]);
+    s.origin_y_ = origin_for(lo[1], hi[1]);
+    s.exponent_ = s.exponent_for(tr);
+    return s;
+  }
+
+private:
+  double scaled(double d) const { return exponent_ == 0 ? d : std::ldexp(d, -exponent_); }
+
+  // The origin of one axis whose coordinates span [lo, hi]: its midpoint
+  // when the whole span lies within [o / 2, 2 o] with room to spare (the
+  // points the mesher makes lie inside the span, up to rounding), else 0.
+  static double origin_for(double lo, double hi)
+  {
+    if(!std::isfinite(lo) || !std::isfinite(hi)) return 0;
+    const double o = 0.5 * lo + 0.5 * hi;
+    const double half_width = 0.5 * hi - 0.5 * lo;
+    // the span is small against |o|: lo >= 3/4 o and hi <= 5/4 o (for o > 0)
+    if(!(half_width <= 0.25 * std::abs(o)) || !std::isfinite(o)) return 0;
+    return o;
+  }
+
+  // The exponent for the largest internal coordinate magnitude m before
+  // scaling: 0 while m lies within 2^(+-100) of 1, where nothing can
+  // overflow, and otherwise the one that brings m to [1, 2), unless some
+  // coordinate would not survive the scaling exactly (a domain spanning
+  // 1e-300 to 1e+300).
+  template <class Tr>
+  int exponent_for(const Tr& tr) const
   {
     double m = 0;
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-      m = (std::max)({m, std::abs(CGAL::to_double(v->point().x())), std::abs(CGAL::to_double(v->point().y()))});
+      m = (std::max)({m, std::abs(CGAL::to_double(v->point().x()) - origin_x_),
+                      std::abs(CGAL::to_double(v->point().y()) - origin_y_)});
     if(!(m > 0) || !std::isfinite(m) || (m < std::ldexp(1., 100) && m > std::ldexp(1., -100))) return 0;
     const int e = std::ilogb(m);
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-      for(const double c : {CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())})
+      for(const double c : {CGAL::to_double(v->point().x()) - origin_x_, CGAL::to_double(v->point().y()) - origin_y_})
         if(std::ldexp(std::ldexp(c, -e), e) != c) return 0;
     return e;
   }
 
-private:
   int exponent_ = 0;
+  double origin_x_ = 0, origin_y_ = 0;
 };
 
 } // namespace internal

@@ -60,7 +60,7 @@ public:
     }
     // a size far beyond the domain's scale may leave the doubles once
     // scaled: it bounds nothing, as 1e300 does not at unit scale
-    const double hd = (std::max)((std::min)(ctx_.scaling.to_internal(h), 1e300), (std::numeric_limits<double>::min)());
+    const double hd = (std::max)((std::min)(ctx_.scaling.to_internal_length(h), 1e300), (std::numeric_limits<double>::min)());
     return hd / std::sqrt(3.);
   }
 
