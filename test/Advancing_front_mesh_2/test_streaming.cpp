@@ -302,7 +302,10 @@ AFM_TEST_CASE(test_streaming_resume_equals_uninterrupted)
 {
   if(checkpoints_skipped()) return;
   for(const afm_robustness::Case& c : afm_robustness::catalogue())
-    check_resume<Epick>(c.in, afm_robustness::Case_size<Epick>(c), c.name, 20, 8);
+    // every 10 triangles: on "many holes" the mesh grades away from the
+    // holes in layers, and only 17 triangles are finished before the last
+    // steps
+    check_resume<Epick>(c.in, afm_robustness::Case_size<Epick>(c), c.name, 10, 8);
   const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
   check_resume<Epick>(square, afm_test::uniform<Epick>(0.01), "square with hole, h = 0.01", 5000, 4096);
   const auto airfoil = afm_geometry::multi_element_airfoil(10, 32);
