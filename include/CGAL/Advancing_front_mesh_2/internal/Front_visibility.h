@@ -63,6 +63,10 @@ public:
 
 private:
   bool edge_blocks(Vid g, Vid h, Vid s, const Point& ps, Vid t, const Point& pt) const;
+  Vid closing_edge(Vid v, Vid o) const;
+  Vid nearest_outgoing_clockwise(Vid v, const Point& d) const;
+  bool in_free_sector_of_any(Vid v, const Point& q, Vid qid) const;
+  bool in_free_sector_of_nearest(Vid v, const Point& q, Vid qid) const;
 
   // A segment's bounding box in doubles, padded by more than the rounding
   // of the coordinates: most front edges and vertices of a neighbourhood are
@@ -128,22 +132,91 @@ private:
 // qualify, and so do the sector's own bounding front edges when q is their
 // other end point (vertex id qid): the segment is then that front edge,
 // which a triangle may close.
+//
+// Testing every outgoing edge costs the product of the degrees, which at a
+// vertex where n constraints meet made the mesher cubic in n (17.5 s for a
+// star of 2,000 spokes). Only one outgoing edge can decide, though: if q
+// lies in the sector of o, it lies in the sector of the outgoing edge o*
+// nearest to q clockwise too (the arc from o* to q is part of the arc from
+// o to q, so it holds no incoming edge either); and likewise for the
+// incoming edge qid closing a sector. Above a few edges only those are
+// tested, in time linear in the degree.
 template <class Front, class C>
 bool Front_visibility<Front, C>::in_free_sector(Vid v, const Point& q, Vid qid) const
 {
   if(front_.out[v].empty()) return front_.in[v].empty();
+  if(front_.out[v].size() <= 4) return in_free_sector_of_any(v, q, qid);
+  const bool free = in_free_sector_of_nearest(v, q, qid);
+  CGAL_assertion(front_.out[v].size() > 64 || free == in_free_sector_of_any(v, q, qid));
+  return free;
+}
+
+// The first incoming front edge at v counter-clockwise from the outgoing
+// one to o (directions in (0, 2 pi]; of equal ones, the first listed).
+template <class Front, class C>
+typename Front::Vid Front_visibility<Front, C>::closing_edge(Vid v, Vid o) const
+{
+  const Point& pv = front_.point(v);
+  Vid closing = no_vertex;
+  for(Vid i : front_.in[v])
+    if(closing == no_vertex || ctx_.pred.turns_before(pv, front_.point(o), front_.point(i), front_.point(closing)))
+      closing = i;
+  return closing;
+}
+
+// The definition: every outgoing edge's sector in turn.
+template <class Front, class C>
+bool Front_visibility<Front, C>::in_free_sector_of_any(Vid v, const Point& q, Vid qid) const
+{
   const Point& pv = front_.point(v);
   for(Vid o : front_.out[v]) {
-    Vid closing = no_vertex;
-    for(Vid i : front_.in[v])
-      if(closing == no_vertex || ctx_.pred.turns_before(pv, front_.point(o), front_.point(i), front_.point(closing)))
-        closing = i;
+    const Vid closing = closing_edge(v, o);
     if(closing == no_vertex) continue;
     if(qid != no_vertex && (qid == o || qid == closing)) return true;
     if(ctx_.pred.turn_region(pv, front_.point(o), q) == 3) continue;
     if(ctx_.pred.turns_before(pv, front_.point(o), q, front_.point(closing))) return true;
   }
   return false;
+}
+
+// The outgoing edge at v nearest clockwise to direction v -> d, of those not
+// in that direction (no_vertex if there is none).
+template <class Front, class C>
+typename Front::Vid Front_visibility<Front, C>::nearest_outgoing_clockwise(Vid v, const Point& d) const
+{
+  const Point& pv = front_.point(v);
+  Vid nearest = no_vertex;
+  for(Vid o : front_.out[v]) {
+    if(ctx_.pred.turn_region(pv, d, front_.point(o)) == 3) continue;
+    // the largest counter-clockwise turn from d is the nearest clockwise
+    if(nearest == no_vertex || ctx_.pred.turns_before(pv, d, front_.point(nearest), front_.point(o))) nearest = o;
+  }
+  return nearest;
+}
+
+// The same answer as in_free_sector_of_any(), from the one or two outgoing
+// edges that decide it.
+template <class Front, class C>
+bool Front_visibility<Front, C>::in_free_sector_of_nearest(Vid v, const Point& q, Vid qid) const
+{
+  if(front_.in[v].empty()) return false; // no sector closes
+  if(qid != no_vertex) {
+    const auto& out = front_.out[v];
+    if(std::find(out.begin(), out.end(), qid) != out.end()) return true;
+    const auto& in = front_.in[v];
+    if(std::find(in.begin(), in.end(), qid) != in.end()) {
+      // if qid closes some sector, it closes that of the outgoing edge
+      // nearest to it clockwise (or, with all of them in its direction, of
+      // any of them)
+      Vid o = nearest_outgoing_clockwise(v, front_.point(qid));
+      if(o == no_vertex) o = *out.begin();
+      if(closing_edge(v, o) == qid) return true;
+    }
+  }
+  const Vid o = nearest_outgoing_clockwise(v, q);
+  if(o == no_vertex) return false; // q runs along every outgoing edge
+  const Point& pv = front_.point(v);
+  return ctx_.pred.turns_before(pv, front_.point(o), q, front_.point(closing_edge(v, o)));
 }
 
 // Does front edge (g, h) block the segment s-t (s, t given as vertex ids, or
