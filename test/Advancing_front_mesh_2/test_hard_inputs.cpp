@@ -154,3 +154,29 @@ AFM_TEST_CASE(test_hard_input_constraint_star_bounded_work)
   std::cout << "    Epeck: in-circle tests per triangle " << incircle_tests_per_triangle(exact) << "\n";
   AFM_CHECK(incircle_tests_per_triangle(exact) < 2 + 0.25 * 250);
 }
+
+// The origin of the internal coordinates (family 4) is taken only where it
+// keeps them exact: a domain far from 0 whose coordinates are doubles, also
+// with an exact kernel; not when a user's point is not a double (its
+// to_double rounds relative to the user's magnitude, which the searches'
+// paddings, relative to the internal coordinates, would not cover).
+AFM_TEST_CASE(test_hard_input_origin_only_for_exact_internal_coordinates)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  typedef afm_test::Types<Epeck>::CDT CDT;
+  typedef CGAL::Advancing_front_mesh_2::internal::Coordinate_scaling<CDT::Point> Scaling;
+  CDT doubles, thirds;
+  for(const double x : {1e12, 1e12 + 1, 1e12 + 0.5})
+    for(const double y : {-5e11, -5e11 + 2}) {
+      doubles.insert(CDT::Point(x, y));
+      thirds.insert(CDT::Point(Epeck::FT(x) + Epeck::FT(1) / 3, Epeck::FT(y)));
+    }
+  const Scaling a = Scaling::for_triangulation(doubles), b = Scaling::for_triangulation(thirds);
+  AFM_CHECK(a.origin_x() == 0.5e12 + 0.5e12 + 0.5 && a.origin_y() == -5e11 + 1);
+  AFM_CHECK(a.ix(CDT::Point(1e12, -5e11)) == -0.5 && a.iy(CDT::Point(1e12, -5e11)) == -1);
+  AFM_CHECK(b.origin_x() == 0 && b.origin_y() == 0);
+  // near 0 compared with its width, a domain keeps the origin 0
+  CDT near;
+  for(const double x : {-1., 3.}) near.insert(CDT::Point(x, x));
+  AFM_CHECK(Scaling::for_triangulation(near).origin_x() == 0);
+}

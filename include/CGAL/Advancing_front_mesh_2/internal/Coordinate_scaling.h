@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace CGAL {
 namespace Advancing_front_mesh_2 {
@@ -34,9 +35,15 @@ namespace internal {
 // square at 1e12): the searches pad their answers by a small fraction of
 // the coordinates' magnitude, which would otherwise be the whole domain's
 // width there and turn every search into a scan. The origin is taken on an
-// axis only when every coordinate of the domain's box lies within a factor
-// of two of it, so that the subtraction is exact (Sterbenz's lemma) for the
-// input points and for every point the mesher makes inside the box.
+// axis only when every coordinate of the domain's box lies within 25% of it
+// (well inside the factor of two of Sterbenz's lemma), so that the
+// subtraction is exact for the input points and for every point the mesher
+// makes inside the box; and only when every vertex's coordinates are
+// doubles (always so with double coordinates; with other number types, when
+// the user's points are): the searches' paddings, relative to the internal
+// coordinates, would not cover to_double's rounding of other coordinates,
+// which is relative to the user's magnitude. The mesher makes its points
+// from doubles.
 template <class Point>
 class Coordinate_scaling
 {
@@ -79,13 +86,26 @@ public:
       first = false;
     }
     Coordinate_scaling s;
-    s.origin_x_ = origin_for(lo[0], hi[0]);
-    s.origin_y_ = origin_for(lo[1], hi[1]);
+    if(coordinates_are_doubles(tr)) {
+      s.origin_x_ = origin_for(lo[0], hi[0]);
+      s.origin_y_ = origin_for(lo[1], hi[1]);
+    }
     s.exponent_ = s.exponent_for(tr);
     return s;
   }
 
 private:
+  template <class Tr>
+  static bool coordinates_are_doubles(const Tr& tr)
+  {
+    if(std::is_same<FT, double>::value) return true;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      if(FT(CGAL::to_double(v->point().x())) != v->point().x() ||
+         FT(CGAL::to_double(v->point().y())) != v->point().y())
+        return false;
+    return true;
+  }
+
   double scaled(double d) const { return exponent_ == 0 ? d : std::ldexp(d, -exponent_); }
 
   // The origin of one axis whose coordinates span [lo, hi]: its midpoint

@@ -146,7 +146,10 @@ void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Ne
     const double height = v > 0 ? num / v : 0;
     const double low = (v + e_uv > 0 && num - e_num > 0) ? (num - e_num) / (v + e_uv)
                                                         : -std::numeric_limits<double>::infinity();
-    const double high = (v - e_uv > 0) ? (num + e_num) / (v - e_uv) : std::numeric_limits<double>::infinity();
+    // (a numerator that may be negative is divided by the larger denominator)
+    const double high = !(v - e_uv > 0) ? std::numeric_limits<double>::infinity()
+                        : num + e_num >= 0 ? (num + e_num) / (v - e_uv)
+                                           : (num + e_num) / (v + e_uv);
     const Candidate cand{std::isfinite(height) ? height : 0., c, UNTESTED, low, high};
     if(low > cutoff && std::isfinite(low)) {
       dropped_.push_back(cand);
