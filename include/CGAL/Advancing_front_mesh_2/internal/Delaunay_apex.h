@@ -50,18 +50,16 @@ public:
                  double max_centre_height = std::numeric_limits<double>::infinity());
 
 private:
-  enum Candidate_state : unsigned char { UNTESTED, QUALIFIES, REJECTED };
   struct Candidate
   {
     double height;         // approximate circle-centre height, for the order
     Vid vertex;
-    Candidate_state state;
     double low;            // a lower bound of the true height
     double high;           // an upper bound of the true height
   };
 
   void collect_candidates(Vid a, Vid b, const Neighbourhood& n, double max_centre_height);
-  bool qualifies(Vid a, Vid b, Candidate& cand) const;
+  bool qualifies(Vid a, Vid b, Vid c) const;
   Vid lowest_visible_by_runs(Vid a, Vid b, const Neighbourhood& n);
 
   Context& ctx_;
@@ -150,7 +148,7 @@ void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Ne
     const double high = !(v - e_uv > 0) ? std::numeric_limits<double>::infinity()
                         : num + e_num >= 0 ? (num + e_num) / (v - e_uv)
                                            : (num + e_num) / (v + e_uv);
-    const Candidate cand{std::isfinite(height) ? height : 0., c, UNTESTED, low, high};
+    const Candidate cand{std::isfinite(height) ? height : 0., c, low, high};
     if(low > cutoff && std::isfinite(low)) {
       dropped_.push_back(cand);
     } else {
@@ -205,7 +203,7 @@ typename Front::Vid Delaunay_apex<Front, Visibility>::lowest_visible_by_runs(Vid
     }
     std::size_t best = end;
     for(std::size_t i = run; i < end; ++i) {
-      Candidate& cand = candidates_[i];
+      const Candidate& cand = candidates_[i];
       if(best != end) {
         ++ctx_.stats.incircle_tests;
         if(!ctx_.pred.strictly_inside_circle(pa, pb, front_.point(candidates_[best].vertex),
@@ -213,7 +211,7 @@ typename Front::Vid Delaunay_apex<Front, Visibility>::lowest_visible_by_runs(Vid
           continue;
       }
       // its four free-sector tests are done when it qualifies
-      if(qualifies(a, b, cand) &&
+      if(qualifies(a, b, cand.vertex) &&
          visibility_.visible_from_both(a, pa, b, pb, cand.vertex, front_.point(cand.vertex), n, true))
         best = i;
     }
@@ -223,20 +221,14 @@ typename Front::Vid Delaunay_apex<Front, Visibility>::lowest_visible_by_runs(Vid
   return no_vertex;
 }
 
-// Are c's and the edge's end points in each other's free sectors (cached)?
+// Are c's and the edge's end points in each other's free sectors? (The one
+// pass asks at most once per candidate.)
 template <class Front, class Visibility>
-bool Delaunay_apex<Front, Visibility>::qualifies(Vid a, Vid b, Candidate& cand) const
+bool Delaunay_apex<Front, Visibility>::qualifies(Vid a, Vid b, Vid c) const
 {
-  if(cand.state == UNTESTED) {
-    const Point& pa = front_.point(a);
-    const Point& pb = front_.point(b);
-    const Vid c = cand.vertex;
-    const Point& pc = front_.point(c);
-    const bool ok = visibility_.in_free_sector(a, pc, c) && visibility_.in_free_sector(b, pc, c) &&
-                    visibility_.in_free_sector(c, pa, a) && visibility_.in_free_sector(c, pb, b);
-    cand.state = ok ? QUALIFIES : REJECTED;
-  }
-  return cand.state == QUALIFIES;
+  const Point& pc = front_.point(c);
+  return visibility_.in_free_sector(a, pc, c) && visibility_.in_free_sector(b, pc, c) &&
+         visibility_.in_free_sector(c, front_.point(a), a) && visibility_.in_free_sector(c, front_.point(b), b);
 }
 
 } // namespace internal
