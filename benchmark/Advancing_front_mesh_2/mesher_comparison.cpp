@@ -988,7 +988,10 @@ int main(int argc, char* argv[])
     const auto t = std::chrono::steady_clock::now();
     std::vector<std::pair<Point, K::FT> > spacing;
     AFM::boundary_spacing_2(cdt, std::back_inserter(spacing));
-    const Poisson_field field(spacing, afm_paper::figure_12_sources<K>(Point(0.5, 0), 15, 2 * CGAL_PI * 15 / 64));
+    AFM::Poisson_sizing_field_options paper; // the boundary spacing diffused with the sources, as in the paper
+    paper.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES;
+    const Poisson_field field(spacing, afm_paper::figure_12_sources<K>(Point(0.5, 0), 15, 2 * CGAL_PI * 15 / 64),
+                              paper);
     b.poisson_field_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     Series_calibration cal;
     b.run_case("Four-element airfoil (Poisson field with the sources of the paper's Fig. 12)",

@@ -98,6 +98,7 @@ Field field_of(const Poly_data& in, const std::vector<AFM::Size_source_2<K> >& s
   AFM::boundary_spacing_2(cdt, std::back_inserter(spacing));
   AFM::Poisson_sizing_field_options o;
   o.max_size = max_size;
+  o.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES; // the paper's field
   return Field(spacing, sources, o);
 }
 

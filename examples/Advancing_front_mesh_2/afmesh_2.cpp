@@ -1,6 +1,7 @@
 // afmesh_2: the command-line front end of Advancing_front_mesh_2.
 //
 //   afmesh_2 INPUT.poly [--size H] [--sources FILE] [--grading G|off]
+//            [--boundary-spacing grow|diffuse]
 //            -o OUT.off [-o OUT.vtu] [-o OUT.svg]
 //            [--smooth N] [--svg-color plain|quality] [--histogram OUT.svg]
 //            [--kernel epick|epeck|exact-rational] [--stats] [--report]
@@ -8,9 +9,11 @@
 //   afmesh_2 --help | --version
 //
 // --size alone meshes with the uniform target edge length H. Otherwise the
-// size field is a Poisson_sizing_field_2 made from the boundary spacing and
-// the sources of FILE (one "x y h" per line), limited by the gradation G
-// (default 0.2) and, with --size, bounded above by H.
+// size field is a Poisson_sizing_field_2: the sources of FILE (one "x y h"
+// per line) diffused by its Poisson solve, the boundary spacing grown from
+// each boundary point at the gradation rate G (default 0.2; or diffused
+// with the sources, --boundary-spacing diffuse) and, with --size, bounded
+// above by H.
 //
 // Streaming (meshes larger than memory): --stream hands finished triangles
 // to the output files while meshing, so that memory holds only the part

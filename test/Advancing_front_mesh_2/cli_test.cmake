@@ -83,8 +83,29 @@ if(NOT LAST_OUT MATCHES "\"gradation\":0.5,.*\"largest\":0.03[,0]")
   message(FATAL_ERROR "--size did not bound the field: ${LAST_OUT}")
 endif()
 expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_sources_max.off)
-expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --sources ${WORK_DIR}/sources.txt --grading off -o ${WORK_DIR}/sq_sharp.off)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --sources ${WORK_DIR}/sources.txt --grading off -o ${WORK_DIR}/sq_sharp.off
+            --stats)
+if(NOT LAST_OUT MATCHES "\"boundary_spacing\":\"diffused\",")
+  message(FATAL_ERROR "--grading off did not diffuse the boundary spacing: ${LAST_OUT}")
+endif()
 expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_sharp.off)
+# the boundary spacing grown (the default) or diffused as in the paper: on
+# the square, whose boundary spacing is uniform, growing it coarsens the inside
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --boundary-spacing diffuse -o ${WORK_DIR}/sq_diffused.off --stats)
+if(NOT LAST_OUT MATCHES "\"boundary_spacing\":\"diffused\",.*\"triangles\":([0-9]+)")
+  message(FATAL_ERROR "--boundary-spacing diffuse not reported: ${LAST_OUT}")
+endif()
+set(diffused_triangles ${CMAKE_MATCH_1})
+expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_diffused.off)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly -o ${WORK_DIR}/sq_grown.off --stats)
+if(NOT LAST_OUT MATCHES "\"boundary_spacing\":\"grown\",.*\"triangles\":([0-9]+)")
+  message(FATAL_ERROR "the default field is not the grown one: ${LAST_OUT}")
+endif()
+if(NOT CMAKE_MATCH_1 LESS diffused_triangles)
+  message(FATAL_ERROR "the grown field (${CMAKE_MATCH_1} triangles) is not coarser than the diffused one (${diffused_triangles})")
+endif()
+expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --boundary-spacing spread -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --boundary-spacing grow --grading off -o ${WORK_DIR}/x.off)
 
 # smoothing, quality report, pictures coloured by quality, histogram
 expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth 3 --report -o ${WORK_DIR}/sq_smooth.off

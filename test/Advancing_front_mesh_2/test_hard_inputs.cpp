@@ -7,10 +7,14 @@
 #include "afm_test_mesh.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
+#include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <random>
 #include <iostream>
 #include <string>
 
@@ -179,4 +183,116 @@ AFM_TEST_CASE(test_hard_input_origin_only_for_exact_internal_coordinates)
   CDT near;
   for(const double x : {-1., 3.}) near.insert(CDT::Point(x, x));
   AFM_CHECK(Scaling::for_triangulation(near).origin_x() == 0);
+}
+
+namespace {
+
+typedef CGAL::Advancing_front_mesh_2::Poisson_sizing_field_2<Epick> Default_field;
+typedef std::vector<std::pair<Epick::Point_2, Epick::FT> > Spacing;
+
+Spacing boundary_spacing_of(const Poly_data& in)
+{
+  afm_test::Types<Epick>::CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  Spacing spacing;
+  CGAL::Advancing_front_mesh_2::boundary_spacing_2(cdt, std::back_inserter(spacing));
+  return spacing;
+}
+
+// afmesh_2's field without --size: the boundary spacing, grown (the
+// default) or diffused as in the paper.
+Default_field default_field(const Spacing& spacing, bool grown)
+{
+  CGAL::Advancing_front_mesh_2::Poisson_sizing_field_options o;
+  if(!grown) o.boundary_spacing = CGAL::Advancing_front_mesh_2::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES;
+  return Default_field(spacing, std::vector<CGAL::Advancing_front_mesh_2::Size_source_2<Epick> >(), o);
+}
+
+// The number of equilateral triangles of the field's size that cover the
+// unit square (midpoint rule on a fine grid; the holes are negligible).
+double expected_triangles_in_unit_square(const Default_field& f)
+{
+  const int n = 400;
+  double sum = 0;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      const double h = f(Epick::Point_2((i + 0.5) / n, (j + 0.5) / n));
+      sum += 4 / std::sqrt(3.) / (h * h);
+    }
+  return sum / (double(n) * n);
+}
+
+double median(std::vector<double> v)
+{
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+} // namespace
+
+// Family 5: with no size given, the field came from the boundary spacing
+// diffused by the Laplace solve, in which a fine feature lowers the field
+// logarithmically over the whole domain: 10 holes 1e-4 across made 52,638
+// triangles (200 holes 35.9 million), where growing the field from every
+// boundary point at the gradation rate makes 24,502 (200 holes 291,764).
+// The grown field is checked against its definition (never above the
+// spacing at a boundary point plus the gradation times the distance), the
+// mesh against the field's triangle count, and both against the diffused
+// field they replace.
+AFM_TEST_CASE(test_hard_input_default_field_grows_from_fine_features)
+{
+  const Poly_data in = afm_hard_inputs::square_with_tiny_holes(10);
+  const Spacing spacing = boundary_spacing_of(in);
+  const Default_field grown = default_field(spacing, true), diffused = default_field(spacing, false);
+  const double g = grown.gradation();
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t above = 0;
+  double largest = 0;
+  for(int k = 0; k < 2000; ++k) {
+    const Epick::Point_2 p(u(rng), u(rng));
+    double bound = 1e300;
+    for(const auto& s : spacing)
+      bound = (std::min)(bound, s.second * (1 + g) + std::sqrt(2.) * g * std::sqrt(CGAL::squared_distance(p, s.first)));
+    above += grown(p) > bound * (1 + 1e-12);
+    largest = (std::max)(largest, grown(p));
+  }
+  AFM_CHECK_MSG(above == 0, above << " samples above the growth from the boundary");
+  // away from the holes it reaches well beyond the outer spacing 0.01
+  AFM_CHECK_MSG(largest > 0.05, "largest size " << largest);
+  const double expected = expected_triangles_in_unit_square(grown);
+  const double expected_diffused = expected_triangles_in_unit_square(diffused);
+  std::cout << "    field's triangle count: grown " << expected << ", diffused " << expected_diffused << "\n";
+  AFM_CHECK(expected < 0.6 * expected_diffused);
+  const afm_test::Result r = afm_test::mesh_and_check<afm_test::Types<Epick>::CDT>(in, grown, "10 tiny holes, default field");
+  const double count = double(r.mesh.triangles.size());
+  std::cout << "    " << count << " triangles, mean radius ratio " << r.report.mean_radius_ratio << "\n";
+  AFM_CHECK_MSG(count > 0.5 * expected && count < 1.5 * expected, count << " triangles for " << expected);
+  AFM_CHECK(r.report.mean_radius_ratio > 0.9);
+}
+
+// The box of side 1,000 with 1,000 bottom points at spacing 1: the field
+// grows away from the bottom, so that edges half-way up are about the
+// gradation times their height long (the diffused field left them near 1).
+AFM_TEST_CASE(test_hard_input_default_field_grows_away_from_a_fine_side)
+{
+  const Poly_data in = afm_hard_inputs::box_with_fine_bottom(1000);
+  const Default_field field = default_field(boundary_spacing_of(in), true);
+  const afm_test::Result r =
+    afm_test::mesh_and_check<afm_test::Types<Epick>::CDT>(in, field, "box with 1,000 fine bottom points, default field");
+  std::vector<double> low, high; // edge lengths at heights 25-50 and 250-500
+  for(const auto& t : r.mesh.triangles)
+    for(int i = 0; i < 3; ++i) {
+      const auto& a = r.mesh.vertices[t[i]];
+      const auto& b = r.mesh.vertices[t[(i + 1) % 3]];
+      const double y = 0.5 * (a[1] + b[1]), length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      if(y >= 25 && y <= 50) low.push_back(length);
+      if(y >= 250 && y <= 500) high.push_back(length);
+    }
+  const double g = field.gradation();
+  std::cout << "    " << r.mesh.triangles.size() << " triangles, median edge " << median(low) << " at heights 25-50, "
+            << median(high) << " at 250-500, mean radius ratio " << r.report.mean_radius_ratio << "\n";
+  AFM_CHECK(median(low) > 0.5 * g * 37.5 && median(low) < 2 * (1 + std::sqrt(2.) * g * 37.5));
+  AFM_CHECK(median(high) > 0.5 * g * 375);
+  AFM_CHECK(r.report.mean_radius_ratio > 0.9);
 }

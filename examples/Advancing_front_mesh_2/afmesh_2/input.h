@@ -116,8 +116,9 @@ std::vector<AFM::Size_source_2<K> > read_sources(const Options& opt)
   return sources;
 }
 
-// --size alone: uniform; otherwise the Poisson background field of the
-// boundary spacing and the sources, bounded above by --size when given.
+// --size alone: uniform; otherwise the background field of the boundary
+// spacing (grown, or diffused with --boundary-spacing diffuse) and the
+// sources (diffused), bounded above by --size when given.
 template <class K>
 void make_size_field(const Options& opt, Input<K>& in)
 {
@@ -132,6 +133,9 @@ void make_size_field(const Options& opt, Input<K>& in)
   field_options.limit_gradation = opt.gradation > 0;
   if(opt.gradation > 0) field_options.gradation = opt.gradation;
   if(opt.has_size) field_options.max_size = opt.size;
+  // Growing needs the gradation limit: with --grading off the spacing is diffused.
+  if(opt.boundary_spacing == "diffuse" || opt.gradation == 0)
+    field_options.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES;
   in.sizing.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
 }
 

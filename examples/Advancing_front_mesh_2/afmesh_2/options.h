@@ -38,6 +38,7 @@ struct Options
   bool has_size = false;
   std::string sources;
   std::string grading = "0.2";
+  std::string boundary_spacing = "grow"; // or "diffuse"
   double gradation = AFM::Poisson_sizing_field_options::default_gradation; // 0: off
   std::vector<std::string> outputs;
   std::string kernel = "epick";
@@ -90,9 +91,9 @@ inline po::options_description visible_options(Command_line& c)
   po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
                                   "Meshes the domain of a Triangle .poly file with the advancing-front\n"
                                   "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
-                                  "length is uniform; otherwise it comes from a background field: the boundary\n"
-                                  "spacing and the point sources, diffused by a Poisson solve on a quadtree,\n"
-                                  "with a gradation limit, and bounded above by --size when given.\n\nOptions");
+                                  "length is uniform; otherwise it comes from a background field on a quadtree:\n"
+                                  "the point sources diffused by a Poisson solve, the boundary spacing grown from\n"
+                                  "the boundary at the gradation rate, bounded above by --size when given.\n\nOptions");
   visible.add_options()
     ("help,h", "print this help and exit")
     ("version", "print the versions of afmesh_2 and of the libraries it was built with, and exit")
@@ -101,7 +102,11 @@ inline po::options_description visible_options(Command_line& c)
      "size sources, one 'x y h' per line ('#' comments): size h prescribed at (x, y)")
     ("grading", po::value<std::string>(&opt.grading)->default_value("0.2"),
      "gradation limit G of the background field: the size changes by at most G per unit length "
-     "along each axis; 'off' to switch it off")
+     "along each axis; 'off' to switch it off (the boundary spacing is then diffused)")
+    ("boundary-spacing", po::value<std::string>(&opt.boundary_spacing)->default_value("grow"),
+     "how the boundary spacing makes the background field: 'grow' (default) from each boundary point at "
+     "the gradation rate, up to the sources' field or the domain's extent; 'diffuse' with the sources by "
+     "the Poisson solve, as in Mavriplis (1992)")
     ("output,o", po::value<std::vector<std::string> >(&opt.outputs),
      "output file, format chosen by extension: .off .vtu .node/.ele .msh .svg (repeatable)")
     ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
@@ -241,6 +246,11 @@ inline void check_new_run(Command_line& c)
   if(opt.svg_color != "plain" && opt.svg_color != "quality")
     throw Usage_error("--svg-color must be plain or quality, not '" + opt.svg_color + "'");
   opt.gradation = parse_grading(opt.grading);
+  if(opt.boundary_spacing != "grow" && opt.boundary_spacing != "diffuse")
+    throw Usage_error("--boundary-spacing must be grow or diffuse, not '" + opt.boundary_spacing + "'");
+  if(opt.gradation == 0 && c.vm.count("boundary-spacing") && !c.vm["boundary-spacing"].defaulted() &&
+     opt.boundary_spacing == "grow")
+    throw Usage_error("--boundary-spacing grow needs a gradation (not --grading off)");
   if(opt.kernel != "epick" && opt.kernel != "epeck" && opt.kernel != "exact-rational")
     throw Usage_error("--kernel must be epick, epeck or exact-rational, not '" + opt.kernel + "'");
   check_output_formats(opt);

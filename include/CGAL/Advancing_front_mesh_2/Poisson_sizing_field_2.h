@@ -71,6 +71,23 @@ struct Poisson_sizing_field_options
   /// the default gradation limit (see `gradation`).
   static constexpr double default_gradation = 0.2;
 
+  /// How the spacing of the boundary points enters the field.
+  enum Boundary_spacing_mode
+  {
+    /// Held at the boundary points and grown away from each of them at the
+    /// gradation rate, up to the field of the sources, or up to the extent
+    /// of the points when there is no source: a fine boundary feature only
+    /// refines its own neighbourhood. Needs the gradation limit.
+    GROW_FROM_BOUNDARY,
+    /// Held at the boundary points as Dirichlet values of the Laplace solve,
+    /// together with the sources: the field of Mavriplis (1992), section 5.
+    /// A fine feature then lowers the field logarithmically far away.
+    DIFFUSE_WITH_SOURCES
+  };
+
+  /// how the boundary spacing enters the field (default: grown).
+  Boundary_spacing_mode boundary_spacing = GROW_FROM_BOUNDARY;
+
   /// whether the gradation limit is applied (on by default).
   bool limit_gradation = true;
 
@@ -110,7 +127,9 @@ Laplace (Poisson, with the sources as its right-hand side) equation solved on
 a quadtree built about the boundary points, and the field is sampled by
 descending the tree and interpolating bilinearly between the corners of the
 leaf (the paper's Fig. 10; the approach follows Pirzadeh, AIAA 91-3233, where
-the sources are heat sources held at a fixed temperature).
+the sources are heat sources held at a fixed temperature). By default the
+boundary spacing is grown from the boundary rather than diffused (see
+<b>The boundary spacing</b> below).
 
 <b>Construction.</b> The quadtree (a `CGAL::Quadtree`) is refined until
 every leaf containing a boundary point of spacing `s` is at most
@@ -128,6 +147,19 @@ five-point Laplacian with zero flux through the sides of the root box; the
 discretization satisfies the discrete maximum principle, so the solved field
 lies between the smallest and the largest prescribed size. The linear system
 is solved with Eigen's sparse LU.
+
+<b>The boundary spacing</b> is, by default
+(`Poisson_sizing_field_options::GROW_FROM_BOUNDARY`), not diffused: the
+Laplace equation holds the sources only (or, with no source, the field
+starts at the points' extent), the corners nearest the boundary points are
+then set to the spacing, and the gradation limit below grows the field from
+them, so that it is the smallest of the sources' field and
+`s_i + G |p - b_i|` over the boundary points `b_i` of spacing `s_i` (up to
+`sqrt(2) G` along the diagonals). A fine boundary feature then refines only
+its neighbourhood. With `DIFFUSE_WITH_SOURCES` the corners nearest the
+boundary points are Dirichlet values of the Laplace solve, as described
+above, which is the paper's field; one fine feature then lowers the field
+over the whole domain, logarithmically.
 
 <b>Gradation.</b> A harmonic field falls off logarithmically about a small
 source, faster than a mesh can follow. By default a gradation limit
@@ -191,7 +223,8 @@ public:
   \throws std::invalid_argument naming the offending entry if a size is not
   a positive finite number, a coordinate is not finite, both ranges are empty,
   the points span more than the largest double, or an option is out of range
-  (gradation not positive, `max_size` below `min_size`).
+  (gradation not positive, `max_size` below `min_size`, `GROW_FROM_BOUNDARY`
+  without the gradation limit).
   \throws std::runtime_error if Eigen cannot factorise the Laplace system
   (not observed; the matrix is a nonsingular M-matrix).
   */
@@ -283,6 +316,9 @@ private:
   {
     if(o.limit_gradation && !(o.gradation > 0 && std::isfinite(o.gradation)))
       throw std::invalid_argument("background size field: the gradation limit must be a positive number");
+    if(!o.limit_gradation && o.boundary_spacing == Poisson_sizing_field_options::GROW_FROM_BOUNDARY)
+      throw std::invalid_argument("background size field: growing the boundary spacing needs the gradation limit "
+                                  "(or boundary_spacing = DIFFUSE_WITH_SOURCES)");
     if(!(o.min_size >= 0) || std::isnan(o.max_size) || !(o.max_size >= o.min_size) || !(o.max_size > 0))
       throw std::invalid_argument("background size field: need 0 <= min_size <= max_size and max_size > 0");
     if(!(o.boundary_resolution > 0 && std::isfinite(o.boundary_resolution)))
@@ -381,9 +417,12 @@ private:
     build_tree(d, in, options);
     d.stats.tree_seconds = seconds_since(t0);
     const auto t1 = std::chrono::steady_clock::now();
-    std::vector<char> fixed;
-    hold_prescribed_corners(d, in, fixed);
-    solve(d, fixed, options);
+    std::vector<char> fixed, by_source;
+    hold_prescribed_corners(d, in, fixed, by_source);
+    if(options.boundary_spacing == Poisson_sizing_field_options::GROW_FROM_BOUNDARY)
+      fill_from_sources(d, fixed, by_source, options);
+    else
+      solve(d, fixed, options);
     d.stats.solve_seconds = seconds_since(t1);
     const auto t2 = std::chrono::steady_clock::now();
     if(d.gradation > 0)
@@ -479,12 +518,13 @@ private:
   }
 
   // The Dirichlet corners: sources first, they override boundary points.
-  static void hold_prescribed_corners(Data& d, const Frame_input& in, std::vector<char>& fixed)
+  static void hold_prescribed_corners(Data& d, const Frame_input& in, std::vector<char>& fixed,
+                                      std::vector<char>& by_source)
   {
     const Tree& tree = *d.tree;
     const std::vector<Tree::Corner>& corners = tree.corners();
     fixed.assign(corners.size(), 0);
-    std::vector<char> by_source(corners.size(), 0);
+    by_source.assign(corners.size(), 0);
     d.value.assign(corners.size(), 0.);
     std::function<void(int, double)> hold = [&](int c, double h) {
       if(by_source[c]) d.value[c] = (std::min)(d.value[c], h);
@@ -512,6 +552,25 @@ private:
       fixed[best] = 1;
     }
     d.stats.number_of_fixed_corners = std::size_t(std::count(fixed.begin(), fixed.end(), 1));
+  }
+
+  // GROW_FROM_BOUNDARY: the sources' field alone (Laplace between the
+  // sources' corners, or the points' extent everywhere when there is no
+  // source), with the boundary spacing held on top. The gradation limit
+  // that follows then lowers every corner to at most the smallest held
+  // value plus G times the distance: the field grows from each boundary
+  // point until it meets the sources' field, whatever the other boundary
+  // points are.
+  static void fill_from_sources(Data& d, const std::vector<char>& fixed, const std::vector<char>& by_source,
+                                const Poisson_sizing_field_options& options)
+  {
+    const std::vector<double> held = d.value;
+    if(std::find(by_source.begin(), by_source.end(), char(1)) != by_source.end())
+      solve(d, by_source, options);
+    else
+      std::fill(d.value.begin(), d.value.end(), d.span); // the extent, in the user's units
+    for(std::size_t i = 0; i < d.value.size(); ++i)
+      if(fixed[i] && !by_source[i]) d.value[i] = held[i];
   }
 
   // Laplace's equation between the held corners, on the sizes or on their
