@@ -269,6 +269,23 @@ foreach(pair "whole.off;part.off" "whole.node;part.node" "whole.ele;part.ele")
 endforeach()
 expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/part.off)
 
+# the background field (no --size), resumed: the same file; the checkpoint
+# holds the field's defaults as options, so that a version with other
+# defaults resumes the same field
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --stream -o ${WORK_DIR}/field_whole.off)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly -o ${WORK_DIR}/field_part.off --checkpoint-every 500 ${WORK_DIR}/field.ckpt
+            --stop-after-checkpoint)
+file(STRINGS ${WORK_DIR}/field.ckpt stored LENGTH_MINIMUM 1 REGEX "^(--grading|0\\.2|--boundary-spacing|grow)$")
+if(NOT stored STREQUAL "--grading;0.2;--boundary-spacing;grow")
+  message(FATAL_ERROR "the checkpoint does not hold the field's defaults: ${stored}")
+endif()
+expect_exit(0 ${AFMESH} --resume ${WORK_DIR}/field.ckpt)
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/field_whole.off ${WORK_DIR}/field_part.off
+                RESULT_VARIABLE differ)
+if(differ)
+  message(FATAL_ERROR "the resumed background-field run differs from the uninterrupted one")
+endif()
+
 # relative names (and the input after --checkpoint-every's two values),
 # resumed from another directory: the checkpoint holds absolute names
 expect_exit(0 ${AFMESH} --size 0.01 -o rel.off --checkpoint-every 2000 rel.ckpt sq.poly --stop-after-checkpoint)

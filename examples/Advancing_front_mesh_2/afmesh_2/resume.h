@@ -78,6 +78,16 @@ inline std::string stored_arguments(const po::parsed_options& parsed, const Opti
     }
   }
   if(!resuming) { // a resumed run's stored options hold them already
+    // the size field's defaults as this version has them, so that a later
+    // version with other defaults resumes the same field
+    bool grading = false, spacing = false;
+    for(const po::option& o : parsed.options) {
+      grading = grading || o.string_key == "grading";
+      spacing = spacing || o.string_key == "boundary-spacing";
+    }
+    if(!grading) out.insert(out.end(), {"--grading", opt.grading});
+    if(!spacing)
+      out.insert(out.end(), {"--boundary-spacing", opt.gradation == 0 ? std::string("diffuse") : opt.boundary_spacing});
     out.insert(out.end(), {"--input-checksum", file_checksum(opt.input)});
     if(!opt.sources.empty()) out.insert(out.end(), {"--sources-checksum", file_checksum(opt.sources)});
   }
