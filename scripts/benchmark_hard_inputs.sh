@@ -97,6 +97,10 @@ for n in 5000 10000 20000 50000 100000; do
   run "2. zigzag of $n points at spacing 1, box 100,000" fine-bottom-zigzag $n epick --size 2500
 done
 run "2. 100,000 collinear points at spacing 1, box 100,000" fine-bottom-collinear 100000 epick --size 2500
+for n in 20000 100000; do
+  run "2. zigzag of $n points, box's sides graded from 1.4 to 2500 (as a boundary discretization would)" \
+    fine-bottom-graded-sides $n epick --size 2500
+done
 for n in 250 500 1000 2000 4000; do
   run "3. star of $n spokes" constraint-star $n epick --size 0.02
 done

@@ -13,6 +13,7 @@
 //   the inputs that once made the mesher slow or too fine (afm_hard_inputs.h):
 //   collinear-strip (N points per long side), fine-bottom-zigzag and
 //   fine-bottom-collinear (N bottom points at spacing 1 in a 100,000 box),
+//   fine-bottom-graded-sides (the zigzag box, its sides graded up to 2500),
 //   constraint-star (N spokes), offset-square-with-hole (offset 10^N,
 //   spacing 2^-8), tiny-holes (N holes), box-with-fine-bottom (N points)
 #include "afm_geometries.h"
@@ -33,6 +34,7 @@ static bool make_hard_input(const std::string& name, double n, CGAL::Advancing_f
   if(name == "collinear-strip") pd = H::collinear_strip(count);
   else if(name == "fine-bottom-zigzag") pd = H::fine_bottom_box(count);
   else if(name == "fine-bottom-collinear") pd = H::fine_bottom_box(count, 100000, true);
+  else if(name == "fine-bottom-graded-sides") pd = H::fine_bottom_box_graded_sides(count);
   else if(name == "constraint-star") pd = H::constraint_star(count);
   else if(name == "offset-square-with-hole") pd = H::offset_square_with_hole(std::pow(10., n), 1. / 256);
   else if(name == "tiny-holes") pd = H::square_with_tiny_holes(count);

@@ -51,6 +51,25 @@ inline Poly_data fine_bottom_box(std::size_t n, double side = 100000, bool colli
   return pd;
 }
 
+// Family 2 with the box's other sides divided as a boundary discretization
+// graded to the size would divide them: from the bottom's spacing, 1.2
+// times longer per piece, up to `size` (what the mesher itself does not do
+// yet), to measure how much of family 2's cost the coarse sides make.
+inline Poly_data fine_bottom_box_graded_sides(std::size_t n, double side = 100000, double size = 2500)
+{
+  std::vector<double> up{0.};         // the sides' division from a bottom corner up
+  for(double h = std::sqrt(2.); up.back() + 1.5 * h < side; h = (std::min)(1.2 * h, size))
+    up.push_back(up.back() + h);
+  Poly_data pd;
+  for(std::size_t i = 0; i < n; ++i) pd.points.push_back({{double(i), double(i % 2)}});
+  for(double y : up) pd.points.push_back({{side, y}});
+  const std::size_t top = std::size_t(std::ceil(side / size));
+  for(std::size_t i = 0; i < top; ++i) pd.points.push_back({{side - side * double(i) / double(top), side}});
+  for(std::size_t i = up.size(); i-- > 1;) pd.points.push_back({{0., up[i]}});
+  detail::close_loop(pd, 0);
+  return pd;
+}
+
 // Family 3: n segments (spokes) of length 0.5 from the centre of the square
 // [-1, 1]^2, all meeting at one interior vertex.
 inline Poly_data constraint_star(std::size_t n)
