@@ -14,8 +14,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <random>
 #include <iostream>
+#include <random>
 #include <string>
 
 namespace {

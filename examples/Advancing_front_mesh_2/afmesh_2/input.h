@@ -133,8 +133,7 @@ void make_size_field(const Options& opt, Input<K>& in)
   field_options.limit_gradation = opt.gradation > 0;
   if(opt.gradation > 0) field_options.gradation = opt.gradation;
   if(opt.has_size) field_options.max_size = opt.size;
-  // Growing needs the gradation limit: with --grading off the spacing is diffused.
-  if(opt.boundary_spacing == "diffuse" || opt.gradation == 0)
+  if(opt.boundary_spacing == "diffuse")
     field_options.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES;
   in.sizing.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
 }

@@ -38,7 +38,7 @@ struct Options
   bool has_size = false;
   std::string sources;
   std::string grading = "0.2";
-  std::string boundary_spacing = "grow"; // or "diffuse"
+  std::string boundary_spacing = "grow"; // or "diffuse"; "diffuse" whenever --grading is off
   double gradation = AFM::Poisson_sizing_field_options::default_gradation; // 0: off
   std::vector<std::string> outputs;
   std::string kernel = "epick";
@@ -251,6 +251,7 @@ inline void check_new_run(Command_line& c)
   if(opt.gradation == 0 && c.vm.count("boundary-spacing") && !c.vm["boundary-spacing"].defaulted() &&
      opt.boundary_spacing == "grow")
     throw Usage_error("--boundary-spacing grow needs a gradation (not --grading off)");
+  if(opt.gradation == 0) opt.boundary_spacing = "diffuse"; // nothing to grow at
   if(opt.kernel != "epick" && opt.kernel != "epeck" && opt.kernel != "exact-rational")
     throw Usage_error("--kernel must be epick, epeck or exact-rational, not '" + opt.kernel + "'");
   check_output_formats(opt);

@@ -123,7 +123,7 @@ Json size_field_json(const Options& opt, const Input<K>& in)
     j["boundary_points"] = fs.number_of_boundary_points;
     j["quadtree_leaves"] = fs.number_of_leaves;
     j["quadtree_corners"] = fs.number_of_corners;
-    j["boundary_spacing"] = (opt.boundary_spacing == "diffuse" || opt.gradation == 0) ? "diffused" : "grown";
+    j["boundary_spacing"] = opt.boundary_spacing == "diffuse" ? "diffused" : "grown";
     j["gradation"] = number(opt.gradation > 0 ? opt.gradation : std::nan(""));
     j["smallest"] = number(fs.smallest_size);
     j["largest"] = number(fs.largest_size);

@@ -86,8 +86,7 @@ inline std::string stored_arguments(const po::parsed_options& parsed, const Opti
       spacing = spacing || o.string_key == "boundary-spacing";
     }
     if(!grading) out.insert(out.end(), {"--grading", opt.grading});
-    if(!spacing)
-      out.insert(out.end(), {"--boundary-spacing", opt.gradation == 0 ? std::string("diffuse") : opt.boundary_spacing});
+    if(!spacing) out.insert(out.end(), {"--boundary-spacing", opt.boundary_spacing});
     out.insert(out.end(), {"--input-checksum", file_checksum(opt.input)});
     if(!opt.sources.empty()) out.insert(out.end(), {"--sources-checksum", file_checksum(opt.sources)});
   }
