@@ -112,6 +112,19 @@ void poly_insert_points(CDT& cdt, const Poly_data& data, const std::vector<typen
   }
 }
 
+// Per point, the number of kept segments and pieces of them (between the
+// points inside a segment) it ends.
+inline std::vector<std::size_t> poly_segment_degrees(const Poly_graph& g, std::size_t n)
+{
+  std::vector<std::size_t> degree(n, 0);
+  for(std::size_t k = 0; k < g.kept.size(); ++k) {
+    ++degree[g.seg_a(g.kept[k])];
+    ++degree[g.seg_b(g.kept[k])];
+    for(std::size_t p : g.inside[k]) degree[p] += 2;
+  }
+  return degree;
+}
+
 template <class CDT>
 void poly_insert(CDT& cdt, const Poly_graph& g, Poly_insertion<CDT>& result)
 {
@@ -130,7 +143,15 @@ void poly_insert(CDT& cdt, const Poly_graph& g, Poly_insertion<CDT>& result)
   for(std::size_t i = 0; i < n; ++i) result.vertices[i] = result.vertices[g.rep[i]];
   // With the crossings and overlaps excluded, the triangulation only splits
   // segments at points already there.
-  for(std::size_t i : g.kept) cdt.insert_constraint(result.vertices[g.seg_a(i)], result.vertices[g.seg_b(i)]);
+  // CGAL looks for the constraint among the edges of its first end point:
+  // that of fewer segments goes first, or the centre of a star of n
+  // segments is searched n times (n^2 steps).
+  const std::vector<std::size_t> degree = poly_segment_degrees(g, n);
+  for(std::size_t i : g.kept) {
+    const std::size_t a = g.seg_a(i), b = g.seg_b(i);
+    if(degree[a] <= degree[b]) cdt.insert_constraint(result.vertices[a], result.vertices[b]);
+    else cdt.insert_constraint(result.vertices[b], result.vertices[a]);
+  }
   for(const auto& h : data.holes) result.hole_seeds.push_back(Point(h[0], h[1]));
 }
 
@@ -218,6 +239,8 @@ std::vector<std::pair<std::size_t, std::vector<std::pair<typename CDT::Face_hand
 poly_unmeshed_segments(const CDT& cdt, const Poly_graph& g, const Poly_insertion<CDT>& result)
 {
   std::vector<std::pair<std::size_t, std::vector<std::pair<typename CDT::Face_handle, int> > > > unmeshed;
+  // is_edge() searches the edges of its first vertex: that of fewer segments
+  const std::vector<std::size_t> degree = poly_segment_degrees(g, result.vertices.size());
   for(std::size_t k = 0; k < g.kept.size(); ++k) {
     const std::size_t i = g.kept[k];
     std::vector<std::size_t> chain(1, g.seg_a(i));
@@ -228,7 +251,9 @@ poly_unmeshed_segments(const CDT& cdt, const Poly_graph& g, const Poly_insertion
     for(std::size_t t = 0; t + 1 < chain.size() && !beside_domain; ++t) {
       typename CDT::Face_handle f;
       int e = 0;
-      if(!cdt.is_edge(result.vertices[chain[t]], result.vertices[chain[t + 1]], f, e)) continue;
+      const bool forward = degree[chain[t]] <= degree[chain[t + 1]];
+      if(!cdt.is_edge(result.vertices[chain[forward ? t : t + 1]], result.vertices[chain[forward ? t + 1 : t]], f, e))
+        continue;
       const typename CDT::Face_handle h = f->neighbor(e);
       beside_domain = (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(h) && h->is_in_domain());
       pieces.emplace_back(f, e);

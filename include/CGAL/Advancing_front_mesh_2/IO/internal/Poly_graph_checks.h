@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -293,19 +294,78 @@ inline void poly_offer_pair_problem(const Poly_graph& g, std::size_t i, std::siz
   // poly_find_points_on_segments())
 }
 
-// Segment pairs: crossings and overlaps.
+// The overlaps among segments sharing the end point c (`at`, sorted here):
+// those along the same direction from c.
+inline void poly_offer_overlaps_at_point(const Poly_graph& g, std::size_t c, std::vector<std::size_t>& at,
+                                         Poly_problem& problem)
+{
+  const Poly_graph::Ek ek;
+  const auto orientation = ek.orientation_2_object();
+  const Poly_graph::Ep pc = g.ep(c);
+  auto other = [&](std::size_t i) { return g.ep(g.seg_a(i) == c ? g.seg_b(i) : g.seg_a(i)); };
+  auto upper = [&](const Poly_graph::Ep& p) { return p.y() > pc.y() || (p.y() == pc.y() && p.x() > pc.x()); };
+  auto before = [&](std::size_t i, std::size_t j) {
+    const Poly_graph::Ep pi = other(i), pj = other(j);
+    if(upper(pi) != upper(pj)) return upper(pi);
+    return orientation(pc, pi, pj) == CGAL::LEFT_TURN;
+  };
+  std::sort(at.begin(), at.end(), before);
+  for(std::size_t k = 0; k < at.size();) {
+    std::size_t end = k + 1;
+    while(end < at.size() && !before(at[k], at[end])) ++end;
+    for(std::size_t u = k; u < end; ++u)
+      for(std::size_t v = u + 1; v < end; ++v) problem.offer(at[u], at[v], POLY_OVERLAP);
+    k = end;
+  }
+}
+
+// Segment pairs: crossings and overlaps, from the pairs of intersecting
+// boxes. The segments at a point where many meet (a star's centre) have
+// boxes that all meet there: their pairs, n^2 / 2 of them, are left out of
+// the box test; two segments sharing an end point can only overlap along a
+// common direction, which sorting them by direction about it finds.
 inline void poly_check_segment_pairs(const Poly_graph& g)
 {
   typedef Poly_graph::Box Box;
   const Poly_namer& name = g.name;
   Poly_problem pair_problem;
   {
-    std::vector<Box> boxes;
-    boxes.reserve(g.kept.size());
-    for(std::size_t i : g.kept) boxes.push_back(g.box_of_segment(i));
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& s, const Box& t) {
-      poly_offer_pair_problem(g, s.info(), t.info(), pair_problem);
-    });
+    constexpr std::size_t hub_degree = 32, max_hubs = 16;
+    std::vector<std::size_t> degree(g.data.points.size(), 0);
+    for(std::size_t i : g.kept) {
+      ++degree[g.seg_a(i)];
+      ++degree[g.seg_b(i)];
+    }
+    // each segment at a hub belongs to one of its hubs
+    std::map<std::size_t, std::vector<std::size_t> > hub_segments;
+    std::vector<Box> others;
+    for(std::size_t i : g.kept) {
+      const std::size_t a = g.seg_a(i), b = g.seg_b(i);
+      if(degree[a] >= hub_degree || degree[b] >= hub_degree) hub_segments[degree[a] >= hub_degree ? a : b].push_back(i);
+      else others.push_back(g.box_of_segment(i));
+    }
+    auto offer = [&](const Box& s, const Box& t) { poly_offer_pair_problem(g, s.info(), t.info(), pair_problem); };
+    if(hub_segments.empty() || hub_segments.size() > max_hubs) { // then the pairs of all boxes
+      for(const auto& h : hub_segments)
+        for(std::size_t i : h.second) others.push_back(g.box_of_segment(i));
+      CGAL::box_self_intersection_d(others.begin(), others.end(), offer);
+    } else {
+      CGAL::box_self_intersection_d(others.begin(), others.end(), offer);
+      std::vector<std::vector<Box> > hub_boxes;
+      for(auto& h : hub_segments) {
+        hub_boxes.emplace_back();
+        for(std::size_t i : h.second) hub_boxes.back().push_back(g.box_of_segment(i));
+        // box_intersection_d() may reorder its ranges: copies
+        std::vector<Box> plain(others);
+        CGAL::box_intersection_d(hub_boxes.back().begin(), hub_boxes.back().end(), plain.begin(), plain.end(), offer);
+        poly_offer_overlaps_at_point(g, h.first, h.second, pair_problem);
+      }
+      for(std::size_t x = 0; x < hub_boxes.size(); ++x)
+        for(std::size_t y = x + 1; y < hub_boxes.size(); ++y) {
+          std::vector<Box> bx(hub_boxes[x]), by(hub_boxes[y]);
+          CGAL::box_intersection_d(bx.begin(), bx.end(), by.begin(), by.end(), offer);
+        }
+    }
   }
   if(pair_problem.found()) {
     const std::size_t i = pair_problem.later, j = pair_problem.earlier;
