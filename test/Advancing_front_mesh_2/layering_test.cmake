@@ -35,6 +35,8 @@ set(AFM_LAYERS
   "1 CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h"
   "1 CGAL/Advancing_front_mesh_2/Kd_tree_point_index.h"
   "1 CGAL/Advancing_front_mesh_2/internal/Checkpoint_support.h"
+  "1 CGAL/Advancing_front_mesh_2/internal/Front_hubs.h"
+  "1 CGAL/Advancing_front_mesh_2/internal/Constraint_hubs.h"
   # L2: the shared state, step 3
   "2 CGAL/Advancing_front_mesh_2/internal/Refinement_context.h"
   "2 CGAL/Advancing_front_mesh_2/internal/Front_2.h"

@@ -380,7 +380,7 @@ void Advancing_front_refiner<Tr, S, V, P, C>::process_edge(Vid a, Vid b)
   if(cavity_.insert_point(a, b, e.mx + d * e.nx, e.my + d * e.ny, d, e.rho, w)) return; // steps 7-12
   ++ctx_.stats.rejected_points;
   ++ctx_.stats.forced_closures;
-  placement_.forced_closure(a, b, e.radius);
+  placement_.forced_closure(a, b);
 }
 
 // Used when a limit stops the run: closes the remaining front on existing
@@ -397,7 +397,7 @@ void Advancing_front_refiner<Tr, S, V, P, C>::close_remaining_front()
     if(it == nullptr || it->version != e.version) continue;
     const Vid a = Front::source(e.key), b = Front::target(e.key);
     front_.created_this_step.clear();
-    placement_.forced_closure(a, b, front_.edge_length(a, b));
+    placement_.forced_closure(a, b);
   }
 }
 

@@ -85,7 +85,7 @@ public:
   Checkpoint_info read(const std::string& content, const std::string& file_name);
 
 private:
-  static constexpr std::uint32_t version = 2; // 2: the coordinate origin
+  static constexpr std::uint32_t version = 3; // 2: the coordinate origin; 3: constraint hubs
   static constexpr std::uint32_t null_face = 0xffffffffu, ghost_face = 0xfffffffeu, no_index = 0xffffffffu;
   static std::string magic() { return "Advancing_front_mesh_2 checkpoint"; }
   static std::string traits_name() { return typeid(typename Context::Geom_traits).name(); }
@@ -298,6 +298,7 @@ void Checkpoint_io<F, V, T>::read_state(Binary_reader& r)
   load_search_structures(t);
   load_ghosts(t);
   check_consistency(t);
+  front_.rebuild_hubs();
 }
 
 // The vertices anything refers to (the active ones, those of the faces in
@@ -320,6 +321,10 @@ void Checkpoint_io<F, V, T>::number_handles(Numbering& n)
   visibility_.constraint_circles.for_each_payload([&](const Constraint& c) {
     n.number(c.first);
     n.number(c.second);
+  });
+  visibility_.constraint_hubs.for_each([&](const Vertex_handle& hub, const std::vector<Vertex_handle>& others) {
+    n.number(hub);
+    for(const Vertex_handle& w : others) n.number(w);
   });
 }
 
@@ -608,6 +613,18 @@ void Checkpoint_io<F, V, T>::save_search_structures(Binary_writer& w, const Numb
       bw.write(n.vertex_code(c.first));
       bw.write(n.vertex_code(c.second));
     });
+    // the hubs' constraints, in the order of the hubs' codes
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t> > > hubs;
+    visibility_.constraint_hubs.for_each([&](const Vertex_handle& hub, const std::vector<Vertex_handle>& others) {
+      hubs.emplace_back(n.vertex_code(hub), std::vector<std::uint32_t>());
+      for(const Vertex_handle& o : others) hubs.back().second.push_back(n.vertex_code(o));
+    });
+    std::sort(hubs.begin(), hubs.end());
+    w.write(std::uint64_t(hubs.size()));
+    for(const auto& h : hubs) {
+      w.write(h.first);
+      w.write_vector(h.second);
+    }
   }
 }
 
@@ -617,12 +634,31 @@ void Checkpoint_io<F, V, T>::load_search_structures(Tables& t)
   if constexpr(is_supported) {
     front_.active_points.load(t.r);
     front_.front_triangle_circles.load(t.r, [&](Binary_reader& br) { return t.face_at(br.read<std::uint32_t>()); });
+    std::vector<std::uint32_t> hub_codes; // a hub's circle names it twice
     visibility_.constraint_circles.load(t.r, [&](Binary_reader& br) {
       const std::uint32_t a = br.read<std::uint32_t>();
       const std::uint32_t b = br.read<std::uint32_t>();
-      t.check(a != b, "constraint");
+      if(a == b) hub_codes.push_back(a);
       return std::make_pair(t.vertex_at(a), t.vertex_at(b));
     });
+    // every hub's circle has its constraints, once
+    const std::uint64_t nhubs = t.r.template read<std::uint64_t>();
+    std::sort(hub_codes.begin(), hub_codes.end());
+    t.check(nhubs == hub_codes.size() && std::adjacent_find(hub_codes.begin(), hub_codes.end()) == hub_codes.end(),
+            "constraint hubs");
+    visibility_.constraint_hubs.clear();
+    std::vector<std::uint32_t> codes;
+    for(std::uint64_t i = 0; i < nhubs; ++i) {
+      const std::uint32_t hub = t.r.template read<std::uint32_t>();
+      t.check(hub == hub_codes[std::size_t(i)], "constraint hub");
+      t.r.read_vector(codes, big);
+      std::vector<Vertex_handle> others;
+      for(std::uint32_t c : codes) {
+        t.check(c != hub, "constraint hub");
+        others.push_back(t.vertex_at(c));
+      }
+      visibility_.constraint_hubs.add(t.vertex_at(hub), std::move(others), ctx_.pred);
+    }
   }
 }
 

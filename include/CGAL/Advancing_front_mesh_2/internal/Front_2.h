@@ -15,6 +15,7 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Double_geometry.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_hubs.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Refinement_context.h>
 
 #include <CGAL/assertions.h>
@@ -57,6 +58,7 @@ public:
 
   // Vertex ids name the active vertices; an edge key is (source, target).
   typedef std::uint32_t Vid;
+  typedef Front_hubs<Point, typename Context::Predicates> Hubs;
   typedef std::uint64_t Edge_key;
   static constexpr Vid no_vertex = (std::numeric_limits<Vid>::max)();
 
@@ -127,6 +129,7 @@ public:
   Front_edge* find(Edge_key k) { return edges.find(k); }
   double edge_length(Vid u, Vid v) const { return length(x(v) - x(u), y(v) - y(u)); }
   bool is_front_segment(Vid u, Vid v) const;
+  bool is_hub(Vid v) const { return hubs.contains(v); }
 
   void add_edge(Vid u, Vid v, Face_handle behind, int behind_index, bool constrained, Vid apex = no_vertex);
   void remove_edge(Vid u, Vid v);
@@ -150,8 +153,11 @@ public:
     removed_since_gather.clear();
   }
 
+  void rebuild_hubs();
+
 private:
   void update_reach(Vid u);
+  void update_hub(Vid v);
   void compact_vertex_ids();
 
   Context& ctx_;
@@ -177,6 +183,10 @@ public:
   Flat_hash_map<const Tds_vertex*, Vid> ids{nullptr};
   std::vector<Vid> free_ids, released_ids;
   Point_index active_points; // the close-point search of step 4
+  // The vertices with many front edges; their edges are reached through the
+  // hub's reach and found by direction (Front_hubs.h), not through the
+  // other end points' reach.
+  Hubs hubs;
 
   // keyed by (source, target); the empty key is no real edge
   Flat_hash_map<Edge_key, Front_edge> edges{~Edge_key(0)};
@@ -214,6 +224,7 @@ void Front_2<C, P, F>::clear()
   loops_changed = false;
   created_this_step.clear();
   active_points.clear();
+  hubs.clear();
 }
 
 // The id of a vertex, which becomes active if it was not.
@@ -292,7 +303,15 @@ void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_ind
   created_this_step.push_back(key(u, v));
   out[u].push_back(v);
   in[v].push_back(u);
-  if(!(len <= active_points.reach(u))) active_points.set_reach(u, len);
+  if(!hubs.empty()) {
+    const auto point_of = [this](Vid w) -> const Point& { return point(w); };
+    if(hubs.contains(u)) hubs.insert(u, v, true, point_of, ctx_.pred);
+    if(hubs.contains(v)) hubs.insert(v, u, false, point_of, ctx_.pred);
+  }
+  // the edge is found through its source, or through the hub it meets
+  const Vid finder = hubs.contains(v) && !hubs.contains(u) ? v : u;
+  if(!(len <= active_points.reach(finder))) active_points.set_reach(finder, len);
+  if(out[u].size() == hubs.min_out_degree) update_hub(u);
   if(behind != Face_handle() && behind->is_in_domain()) count_edge_behind(behind, v, apex, u);
   queue.push(Queue_entry{len, key(u, v), fe.version, fe.level});
   if(queue.size() > 2 * edges.size() + 1024) compact_queue();
@@ -326,7 +345,14 @@ void Front_2<C, P, F>::remove_edge(Vid u, Vid v)
   if(removed_since_gather.size() <= 8) removed_since_gather.push_back(key(u, v));
   out[u].erase_value(v);
   in[v].erase_value(u);
-  update_reach(u);
+  if(!hubs.empty()) {
+    if(hubs.contains(u)) hubs.erase(u, v, true);
+    if(hubs.contains(v)) hubs.erase(v, u, false);
+  }
+  if(out[u].size() + 1 == hubs.min_out_degree) update_hub(u);
+  // a hub's reach is only lowered when it stops being one: recomputed at
+  // every removal it cost the hub's degree each time
+  if(!hubs.contains(u)) update_reach(u);
   if(fe.behind != Face_handle() && fe.behind->is_in_domain()) uncount_edge_behind(fe.behind);
 }
 
@@ -334,17 +360,65 @@ void Front_2<C, P, F>::remove_edge(Vid u, Vid v)
 // outgoing front edge: a front edge meeting a disk of radius s about q has
 // its source within s + its length of q, so the vertices found within s
 // plus their reach lead, through their outgoing edges, to every front edge
-// near the disk (see Neighbourhood.h).
+// near the disk (see Neighbourhood.h). A hub reaches all its edges, also
+// the incoming ones, and the other vertices do not count their edges into
+// a hub: a star's spoke ends then leave the neighbourhoods near its centre
+// alone.
 template <class C, class P, class F>
 void Front_2<C, P, F>::update_reach(Vid u)
 {
   double reach = 0;
-  for(Vid w : out[u]) {
+  const bool hub = hubs.contains(u);
+  auto extend = [&](Vid w) {
     const double l = edge_length(u, w);
     reach = std::isnan(l) ? l : (std::max)(reach, l);
+  };
+  for(Vid w : out[u]) {
+    if(hub || !hubs.contains(w)) extend(w);
     if(std::isnan(reach)) break;
   }
+  if(hub)
+    for(Vid w : in[u]) {
+      if(std::isnan(reach)) break;
+      extend(w);
+    }
   active_points.set_reach(u, reach);
+}
+
+// Makes v a hub, or an ordinary vertex, as its out-degree now asks; the
+// reach of v and of the sources of its incoming edges changes with it.
+template <class C, class P, class F>
+void Front_2<C, P, F>::update_hub(Vid v)
+{
+  const bool hub = out[v].size() >= hubs.min_out_degree;
+  if(hub == hubs.contains(v)) return;
+  if(hub)
+    hubs.make(v, out[v], in[v], [this](Vid w) -> const Point& { return point(w); }, ctx_.pred);
+  else
+    hubs.unmake(v);
+  update_reach(v);
+  for(Vid s : in[v]) update_reach(s);
+}
+
+// The hubs from the front's edges (after the vertex ids changed, or a
+// checkpoint was read). The reach of the other vertices was set for these
+// hubs and is kept; a hub's reach is made to cover all its edges (a
+// checkpoint of an older version may not have counted its incoming ones).
+template <class C, class P, class F>
+void Front_2<C, P, F>::rebuild_hubs()
+{
+  hubs.clear();
+  for(Vid v = 0; v < out.size(); ++v) {
+    if(out[v].size() < hubs.min_out_degree) continue;
+    hubs.make(v, out[v], in[v], [this](Vid w) -> const Point& { return point(w); }, ctx_.pred);
+    double reach = active_points.reach(v);
+    for(const auto* ends : {&out[v], &in[v]})
+      for(Vid w : *ends) {
+        const double l = edge_length(v, w);
+        if(!(l <= reach)) reach = l;
+      }
+    active_points.set_reach(v, reach);
+  }
 }
 
 // Counts one more front edge with f behind it; its first enters f's circle
@@ -443,6 +517,7 @@ void Front_2<C, P, F>::compact_vertex_ids()
   edges = std::move(new_edges);
 
   active_points.renumber(new_id);
+  rebuild_hubs();
   compact_queue(); // the queue's keys name vertices too
   ++ctx_.stats.memory_compactions;
 }

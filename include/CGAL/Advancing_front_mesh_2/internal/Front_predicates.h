@@ -55,6 +55,17 @@ public:
     return false;
   }
 
+  // Does direction v->a come strictly before v->b in the counter-clockwise
+  // turn that starts at the direction of the positive x axis (angles in
+  // [0, 2 pi))? Equal directions are equivalent: a strict weak order of the
+  // directions about v, in which the front edges at a hub are sorted.
+  bool direction_before(const Point& v, const Point& a, const Point& b) const
+  {
+    const bool upper_a = in_upper_half(v, a), upper_b = in_upper_half(v, b);
+    if(upper_a != upper_b) return upper_a;
+    return orientation(v, a, b) == LEFT_TURN;
+  }
+
   // Is q on the closed segment [a, b], knowing a, b, q collinear?
   bool collinear_on_segment(const Point& a, const Point& b, const Point& q) const
   {
@@ -98,6 +109,14 @@ public:
   const GeomTraits& traits() const { return gt_; }
 
 private:
+  // Is the direction v->a in [0, pi), i.e. above v or level with it and to
+  // its right?
+  bool in_upper_half(const Point& v, const Point& a) const
+  {
+    const Comparison_result cy = gt_.compare_y_2_object()(a, v);
+    return cy == LARGER || (cy == EQUAL && gt_.compare_x_2_object()(a, v) == LARGER);
+  }
+
   GeomTraits gt_;
 };
 

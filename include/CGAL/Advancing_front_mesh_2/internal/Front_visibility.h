@@ -12,6 +12,7 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/internal/Constraint_hubs.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Neighbourhood.h>
 
@@ -59,12 +60,18 @@ public:
 
   // The input constraints as diametral circles. They never change: the
   // static index answers the visibility questions of the circle search.
+  // The constraints at a hub enter it as one circle about the hub, whose
+  // payload names the hub twice (Constraint_hubs.h).
   Constraint_circle_index constraint_circles;
+  Constraint_hubs<Vertex_handle, typename Context::Predicates> constraint_hubs;
 
 private:
   bool edge_blocks(Vid g, Vid h, Vid s, const Point& ps, Vid t, const Point& pt) const;
+  bool hub_blocks(Vid v, Vid s, const Point& ps, Vid t, const Point& pt) const;
   Vid closing_edge(Vid v, Vid o) const;
   Vid nearest_outgoing_clockwise(Vid v, const Point& d) const;
+  Vid closing_edge_at_hub(Vid v, Vid o) const;
+  Vid nearest_outgoing_clockwise_at_hub(Vid v, const Point& d) const;
   bool in_free_sector_of_any(Vid v, const Point& q, Vid qid) const;
   bool in_free_sector_of_nearest(Vid v, const Point& q, Vid qid) const;
 
@@ -156,6 +163,7 @@ bool Front_visibility<Front, C>::in_free_sector(Vid v, const Point& q, Vid qid) 
 template <class Front, class C>
 typename Front::Vid Front_visibility<Front, C>::closing_edge(Vid v, Vid o) const
 {
+  if(front_.is_hub(v)) return closing_edge_at_hub(v, o);
   const Point& pv = front_.point(v);
   Vid closing = no_vertex;
   for(Vid i : front_.in[v])
@@ -184,6 +192,7 @@ bool Front_visibility<Front, C>::in_free_sector_of_any(Vid v, const Point& q, Vi
 template <class Front, class C>
 typename Front::Vid Front_visibility<Front, C>::nearest_outgoing_clockwise(Vid v, const Point& d) const
 {
+  if(front_.is_hub(v)) return nearest_outgoing_clockwise_at_hub(v, d);
   const Point& pv = front_.point(v);
   Vid nearest = no_vertex;
   for(Vid o : front_.out[v]) {
@@ -192,6 +201,52 @@ typename Front::Vid Front_visibility<Front, C>::nearest_outgoing_clockwise(Vid v
     if(nearest == no_vertex || ctx_.pred.turns_before(pv, d, front_.point(nearest), front_.point(o))) nearest = o;
   }
   return nearest;
+}
+
+// The same answers at a hub, from its edges sorted by direction: walking
+// from the place of a direction among them, clockwise to the first
+// outgoing edge, or counter-clockwise to the first incoming one. The front's
+// edges alternate between outgoing and incoming around a vertex (but for
+// the two sides of a constraint, which share a direction), so the walks
+// are short.
+template <class Front, class C>
+typename Front::Vid Front_visibility<Front, C>::nearest_outgoing_clockwise_at_hub(Vid v, const Point& d) const
+{
+  const auto& spokes = front_.hubs.spokes(v);
+  const Point& pv = front_.point(v);
+  const std::size_t n = spokes.size();
+  // the first spoke whose direction is not before d's
+  const std::size_t at = std::size_t(std::partition_point(spokes.begin(), spokes.end(), [&](const auto& k) {
+    return ctx_.pred.direction_before(pv, front_.point(k.other), d);
+  }) - spokes.begin());
+  for(std::size_t step = 1; step <= n; ++step) {
+    const auto& k = spokes[(at + n - step) % n];
+    if(k.outgoing && ctx_.pred.turn_region(pv, d, front_.point(k.other)) != 3) return k.other;
+  }
+  return no_vertex;
+}
+
+template <class Front, class C>
+typename Front::Vid Front_visibility<Front, C>::closing_edge_at_hub(Vid v, Vid o) const
+{
+  const auto& spokes = front_.hubs.spokes(v);
+  const Point& pv = front_.point(v);
+  const Point& po = front_.point(o);
+  const std::size_t n = spokes.size();
+  std::size_t at = std::size_t(std::partition_point(spokes.begin(), spokes.end(), [&](const auto& k) {
+    return ctx_.pred.direction_before(pv, front_.point(k.other), po);
+  }) - spokes.begin());
+  while(at < n && !(spokes[at].outgoing && spokes[at].other == o)) ++at;
+  CGAL_assertion(at < n);
+  // an incoming edge along o closes o's sector last (a turn of 2 pi)
+  Vid along = no_vertex;
+  for(std::size_t step = 1; step < n; ++step) {
+    const auto& k = spokes[(at + step) % n];
+    if(k.outgoing) continue;
+    if(ctx_.pred.turn_region(pv, po, front_.point(k.other)) != 3) return k.other;
+    if(along == no_vertex) along = k.other;
+  }
+  return along;
 }
 
 // The same answer as in_free_sector_of_any(), from the one or two outgoing
@@ -240,6 +295,35 @@ bool Front_visibility<Front, C>::edge_blocks(Vid g, Vid h, Vid s, const Point& p
   return ctx_.pred.closed_segments_meet(ps, pt, front_.point(g), front_.point(h));
 }
 
+// Does a front edge at hub v (Front_hubs.h) block the segment s-t, as
+// edge_blocks() decides? Only the edges whose direction from v lies in the
+// cone that the segment spans from v can meet it: found by binary search,
+// they are few where the edges of a star's centre were all scanned.
+template <class Front, class C>
+bool Front_visibility<Front, C>::hub_blocks(Vid v, Vid s, const Point& ps, Vid t, const Point& pt) const
+{
+  if(v == s || v == t) return false; // its edges share an end point with the segment
+  if(!front_.is_hub(v)) {            // not since the gathering: it has few edges
+    for(Vid w : front_.out[v])
+      if(edge_blocks(v, w, s, ps, t, pt)) return true;
+    for(Vid w : front_.in[v])
+      if(edge_blocks(w, v, s, ps, t, pt)) return true;
+    return false;
+  }
+  const Point& pv = front_.point(v);
+  const Orientation o = ctx_.pred.orientation(pv, ps, pt);
+  // through the segment's inside, every edge at v meets it
+  if(o == COLLINEAR && ctx_.pred.collinear_on_segment(ps, pt, pv)) return true;
+  // the arc from direction v->s counter-clockwise to v->t, or the reverse,
+  // whichever is shorter than a half turn (one direction when collinear)
+  const Point& from = o == RIGHT_TURN ? pt : ps;
+  const Point& to = o == RIGHT_TURN ? ps : pt;
+  return front_.hubs.any_in_arc(v, from, to, [this](Vid w) -> const Point& { return front_.point(w); }, ctx_.pred,
+                                [&](const typename Front::Hubs::Spoke& k) {
+    return k.outgoing ? edge_blocks(v, k.other, s, ps, t, pt) : edge_blocks(k.other, v, s, ps, t, pt);
+  });
+}
+
 // Are the open segments s1-t and s2-t inside the unmeshed region: leaving
 // their end points into free sectors, crossing no front edge and passing
 // through no vertex? (s1, s2, t are vertex ids, or no_vertex for the new
@@ -282,6 +366,8 @@ bool Front_visibility<Front, C>::visible_from_both(Vid s1, const Point& ps1, Vid
     const Vid g = Front::source(k), h = Front::target(k);
     if(blocks(g, h, front_.x(g), front_.y(g), front_.x(h), front_.y(h), k)) return false;
   }
+  for(Vid v : n.hubs)
+    if((open1 && hub_blocks(v, s1, ps1, t, pt)) || (open2 && hub_blocks(v, s2, ps2, t, pt))) return false;
   for(std::size_t i = 0; i < n.vertices.size(); ++i) {
     const std::size_t z = n.vertices[i];
     if(z == t) continue;
@@ -304,17 +390,27 @@ bool Front_visibility<Front, C>::sees_point(const Point& p, double px, double py
   const Point q = ctx_.scaling.to_user_point(qx, qy);
   bool blocked = false;
   ++ctx_.stats.constraint_index_queries;
+  // a proper crossing only: touching an end point does not hide
+  auto crosses = [&](const Point& pu, const Point& pv) {
+    const Orientation o1 = ctx_.pred.orientation(p, q, pu), o2 = ctx_.pred.orientation(p, q, pv);
+    if(o1 == COLLINEAR || o2 == COLLINEAR || o1 == o2) return false;
+    const Orientation o3 = ctx_.pred.orientation(pu, pv, p), o4 = ctx_.pred.orientation(pu, pv, q);
+    return o3 != COLLINEAR && o4 != COLLINEAR && o3 != o4;
+  };
   constraint_circles.query(0.5 * (px + qx), 0.5 * (py + qy), 0.5 * length(qx - px, qy - py),
                            [&](const Constraint& c) {
     if(blocked) return;
-    const Point& pu = c.first->point();
-    const Point& pv = c.second->point();
-    // a proper crossing only: touching an end point does not hide
-    const Orientation o1 = ctx_.pred.orientation(p, q, pu), o2 = ctx_.pred.orientation(p, q, pv);
-    if(o1 == COLLINEAR || o2 == COLLINEAR || o1 == o2) return;
-    const Orientation o3 = ctx_.pred.orientation(pu, pv, p), o4 = ctx_.pred.orientation(pu, pv, q);
-    if(o3 == COLLINEAR || o4 == COLLINEAR || o3 == o4) return;
-    blocked = true;
+    if(c.first != c.second) {
+      blocked = crosses(c.first->point(), c.second->point());
+      return;
+    }
+    // a hub: only a constraint in the cone that p-q spans from it can cross
+    // p-q, and none can when the hub is in line with p and q
+    const Point& ph = c.first->point();
+    const Orientation o = ctx_.pred.orientation(ph, p, q);
+    if(o == COLLINEAR) return;
+    blocked = constraint_hubs.any_in_arc(c.first, o == LEFT_TURN ? p : q, o == LEFT_TURN ? q : p, ctx_.pred,
+                                         [&](const Vertex_handle& w) { return crosses(ph, w->point()); });
   });
   return !blocked;
 }

@@ -22,6 +22,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -39,6 +41,7 @@ class Initial_front
 public:
   typedef typename Front::Context Context;
   typedef typename Front::Vid Vid;
+  typedef typename Front::Vertex_handle Vertex_handle;
   typedef typename Front::Face_handle Face_handle;
 
   Initial_front(Context& ctx, Front& front, Visibility& visibility, Triangles& triangles)
@@ -156,12 +159,37 @@ void Initial_front<Front, V, T>::index_constraints(const std::vector<Pending>& p
 {
   const std::array<double, 4>& b = box_;
   visibility_.constraint_circles.reset(b[0] - span_, b[1] - span_, b[2] + span_, b[3] + span_, 2 * span_, 16);
+  visibility_.constraint_hubs.clear();
+  auto once = [](const Pending& p) { return !(p.u > p.v && p.behind == Face_handle()); }; // interior ones twice
+  std::unordered_map<Vid, std::size_t> degree;
+  for(const Pending& p : pending)
+    if(once(p)) {
+      ++degree[p.u];
+      ++degree[p.v];
+    }
+  auto is_hub = [&](Vid v) { return degree[v] >= visibility_.constraint_hubs.min_degree; };
+  // a constraint goes to its first end point's hub, or to its second's, or
+  // into the index as itself
+  std::map<Vid, std::vector<Vertex_handle> > spokes; // in id order: the same index every run
   for(const Pending& p : pending) {
-    if(p.u > p.v && p.behind == Face_handle()) continue; // interior constraint: once
+    if(!once(p)) continue;
+    if(is_hub(p.u) || is_hub(p.v)) {
+      const bool at_u = is_hub(p.u);
+      spokes[at_u ? p.u : p.v].push_back(front_.vertex[at_u ? p.v : p.u]);
+      continue;
+    }
     const double dx = front_.x(p.v) - front_.x(p.u), dy = front_.y(p.v) - front_.y(p.u);
     visibility_.constraint_circles.insert(0.5 * (front_.x(p.u) + front_.x(p.v)), 0.5 * (front_.y(p.u) + front_.y(p.v)),
                                           0.5 * length(dx, dy),
                                           std::make_pair(front_.vertex[p.u], front_.vertex[p.v]));
+  }
+  for(auto& h : spokes) {
+    double reach = 0;
+    for(const Vertex_handle& w : h.second)
+      reach = (std::max)(reach, length(ctx_.ix(w->point()) - front_.x(h.first), ctx_.iy(w->point()) - front_.y(h.first)));
+    visibility_.constraint_circles.insert(front_.x(h.first), front_.y(h.first), reach,
+                                          std::make_pair(front_.vertex[h.first], front_.vertex[h.first]));
+    visibility_.constraint_hubs.add(front_.vertex[h.first], std::move(h.second), ctx_.pred);
   }
   visibility_.constraint_circles.shrink_to_fit();
 }

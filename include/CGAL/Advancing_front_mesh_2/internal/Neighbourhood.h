@@ -62,7 +62,8 @@ public:
   double cx = 0, cy = 0, radius = 0;
   std::vector<std::size_t> vertices;             // active vertices in the disk
   std::vector<std::array<double, 2> > vertex_xy; // their coordinates, in the same order
-  std::vector<Near_edge> edges;                  // front edges meeting the disk when gathered
+  std::vector<Near_edge> edges;                  // front edges meeting the disk when gathered, but
+  std::vector<Vid> hubs;                         // the hubs near it, whose edges are not listed
 
 private:
   Context& ctx_;
@@ -78,11 +79,15 @@ void Neighbourhood<Front>::gather(double x, double y, double r)
   vertices.clear();
   vertex_xy.clear();
   edges.clear();
+  hubs.clear();
   front_.start_change_log();
   // One search finds the active vertices in the disk and, through the
   // vertices within their reach, the front edges whose diametral disk
   // meets it (they may pass through the disk with both end points far
-  // away; the padding is the trees' own).
+  // away; the padding is the trees' own). A hub's edges are not listed:
+  // the visibility tests find the few that matter by direction
+  // (Front_hubs.h). The hub is found through its own reach, which covers
+  // all its edges.
   Phase_scope phase(ctx_.timer, CLOSE_POINT_SEARCH);
   const double pad = 1e-12 * (std::abs(x) + std::abs(y));
   front_.active_points.query_with_reach(x, y, r, [this, x, y, r, pad](std::size_t id, double px, double py,
@@ -91,7 +96,13 @@ void Neighbourhood<Front>::gather(double x, double y, double r)
       vertices.push_back(id);
       vertex_xy.push_back({{px, py}});
     }
+    const bool any_hubs = !front_.hubs.empty();
+    if(any_hubs && front_.is_hub(Vid(id))) {
+      hubs.push_back(Vid(id));
+      return;
+    }
     for(Vid h : front_.out[Vid(id)]) {
+      if(any_hubs && front_.is_hub(h)) continue;
       const double hx = front_.x(h), hy = front_.y(h);
       const double dx = 0.5 * (px + hx) - x, dy = 0.5 * (py + hy) - y;
       const double reach = (0.5 * length(hx - px, hy - py) + r) * (1 + 1e-9) + pad +

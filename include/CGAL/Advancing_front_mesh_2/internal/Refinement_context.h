@@ -33,6 +33,7 @@ struct Refinement_context
   typedef Tr_ Tr;
   typedef typename Tr::Geom_traits Geom_traits;
   typedef typename Geom_traits::FT FT;
+  typedef Front_predicates<Geom_traits> Predicates;
   typedef typename Tr::Point Point;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Face_handle Face_handle;
@@ -73,7 +74,7 @@ struct Refinement_context
   }
 
   Tr& tr;
-  Front_predicates<Geom_traits> pred;
+  Predicates pred;
   Coordinate_scaling<Point> scaling;
   Phase_timer timer;
   Advancing_front_mesh_2::Statistics stats;

@@ -94,11 +94,17 @@ bool Streaming_output<Front, S, V>::front_meets_disk(double cx, double cy, doubl
       meets = true;
       return;
     }
-    for(Vid h : front_.out[Vid(id)])
-      if(!(segment_distance(cx, cy, px, py, front_.x(h), front_.y(h)) > radius + pad)) {
-        meets = true;
-        return;
-      }
+    // a hub's reach covers its incoming edges too, which their sources'
+    // reach does not (Front_2::update_reach())
+    const bool hub = front_.is_hub(Vid(id));
+    for(const auto* ends : {&front_.out[Vid(id)], hub ? &front_.in[Vid(id)] : nullptr}) {
+      if(ends == nullptr) continue;
+      for(Vid h : *ends)
+        if(!(segment_distance(cx, cy, px, py, front_.x(h), front_.y(h)) > radius + pad)) {
+          meets = true;
+          return;
+        }
+    }
   });
   return meets;
 }
