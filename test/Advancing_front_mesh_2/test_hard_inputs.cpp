@@ -159,6 +159,60 @@ AFM_TEST_CASE(test_hard_input_constraint_star_bounded_work)
   AFM_CHECK(incircle_tests_per_triangle(exact) < 2 + 0.25 * 250);
 }
 
+// Family 3, the work at the centre. Each of its 2n front edges lay in
+// every neighbourhood near it, every free-sector test there walked them
+// all, and every new point's cavity tested the n constraints' circles; a
+// hub's edges and constraints are now sorted by direction and only those in
+// the cone a segment spans are tested (Front_hubs.h, Constraint_hubs.h).
+// The orientation tests per triangle, counted here, were 4 times as many at
+// 1,000 spokes as at 250 (the work per triangle linear in the spokes);
+// they are now about the same. (Timed in benchmark/: 76 times the square's
+// time per triangle at 4,000 spokes before, 4 now.)
+namespace {
+std::size_t orientation_count = 0;
+struct Orientation_counting_kernel : Epick
+{
+  struct Orientation_2
+  {
+    CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
+    {
+      ++orientation_count;
+      return Epick().orientation_2_object()(p, q, r);
+    }
+  };
+  Orientation_2 orientation_2_object() const { return Orientation_2(); }
+};
+} // namespace
+
+AFM_TEST_CASE(test_hard_input_constraint_star_centre_costs_no_more_with_more_spokes)
+{
+  typedef Orientation_counting_kernel K;
+  typedef afm_test::Types<K>::CDT CDT;
+  typedef CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K> Sizing;
+  double per_triangle[2];
+  const std::size_t spokes[2] = {250, 1000};
+  for(int i = 0; i < 2; ++i) {
+    const Poly_data in = afm_hard_inputs::constraint_star(spokes[i]);
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    // the mesher's tests only (the input's checks see the star once)
+    orientation_count = 0;
+    auto seeds = afm_test::seeds_of<CDT>(in);
+    afm_test::Mesher<CDT, Sizing> mesher(cdt, afm_test::uniform<K>(0.05));
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.refine_mesh();
+    const std::size_t count = orientation_count;
+    const afm_check::Mesh mesh = afm_test::extract_mesh(cdt);
+    const afm_check::Report report = afm_check::check_mesh(afm_test::to_pslg(in), mesh);
+    AFM_CHECK_MSG(report.ok, report.summary());
+    per_triangle[i] = double(count) / double(mesh.triangles.size());
+    std::cout << "  star of " << spokes[i] << " spokes: " << report.summary() << ", orientation tests per triangle "
+              << per_triangle[i] << "\n";
+  }
+  AFM_CHECK_MSG(per_triangle[1] < 1.5 * per_triangle[0],
+                "orientation tests per triangle " << per_triangle[0] << " -> " << per_triangle[1]);
+}
+
 // The origin of the internal coordinates (family 4) is taken only where it
 // keeps them exact: a domain far from 0 whose coordinates are doubles, also
 // with an exact kernel; not when a user's point is not a double (its

@@ -5,6 +5,7 @@
 #include "afm_test_harness.h"
 #include "afm_test_mesh.h"
 #include "afm_geometries.h"
+#include "afm_hard_inputs.h"
 #include "afm_robustness_catalogue.h"
 #include "afm_brute_force_indices.h"
 
@@ -308,6 +309,9 @@ AFM_TEST_CASE(test_streaming_resume_equals_uninterrupted)
     check_resume<Epick>(c.in, afm_robustness::Case_size<Epick>(c), c.name, 10, 8);
   const auto square = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
   check_resume<Epick>(square, afm_test::uniform<Epick>(0.01), "square with hole, h = 0.01", 5000, 4096);
+  // a centre where 60 constraints meet: the hubs of the front and of the
+  // constraints (Front_hubs.h, Constraint_hubs.h) go through the checkpoint
+  check_resume<Epick>(afm_hard_inputs::constraint_star(60), afm_test::uniform<Epick>(0.05), "star of 60 spokes", 10, 8);
   const auto airfoil = afm_geometry::multi_element_airfoil(10, 32);
   check_resume<Epeck>(airfoil, afm_test::Boundary_graded_size<Epeck>(airfoil, 0.3), "four-element airfoil, Epeck",
                       1000, 64);
