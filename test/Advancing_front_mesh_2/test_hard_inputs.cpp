@@ -213,6 +213,30 @@ AFM_TEST_CASE(test_hard_input_constraint_star_centre_costs_no_more_with_more_spo
                 "orientation tests per triangle " << per_triangle[0] << " -> " << per_triangle[1]);
 }
 
+// Two hubs joined by a one-sided front edge: two fans of 40 constraints on
+// the bottom side of the unit square, whose centres are consecutive boundary
+// points, so that hubs come and go next to each other. The front's
+// invariants, checked at every step, include that the close-point search
+// finds every front edge: within the reach of its source, or of a hub at
+// either end (Front_2::reach_covers_edges()). (A review found that an edge
+// made between two hubs was lost when its source stopped being a hub; this
+// input does not make such an edge, the fix in Front_2::add_edge() is not
+// proven by it.)
+AFM_TEST_CASE(test_hard_input_adjacent_hubs_keep_their_edges_reachable)
+{
+  Poly_data in;
+  in.points = {{{0., 0.}}, {{0.3, 0.}}, {{0.7, 0.}}, {{1., 0.}}, {{1., 1.}}, {{0., 1.}}};
+  for(std::size_t i = 0; i < in.points.size(); ++i) in.segments.push_back({{i, (i + 1) % in.points.size()}});
+  const double pi = 3.14159265358979323846;
+  for(const std::size_t centre : {std::size_t(1), std::size_t(2)})
+    for(int k = 1; k <= 40; ++k) {
+      const double a = pi * k / 41;
+      in.points.push_back({{in.points[centre][0] + 0.15 * std::cos(a), 0.15 * std::sin(a)}});
+      in.segments.push_back({{centre, in.points.size() - 1}});
+    }
+  afm_test::mesh_and_check<afm_test::Types<Epick>::CDT>(in, afm_test::uniform<Epick>(0.03), "two fans of 40 on one side", 1);
+}
+
 // The origin of the internal coordinates (family 4) is taken only where it
 // keeps them exact: a domain far from 0 whose coordinates are doubles, also
 // with an exact kernel; not when a user's point is not a double (its

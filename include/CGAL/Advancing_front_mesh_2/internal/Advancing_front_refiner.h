@@ -148,7 +148,7 @@ public:
   const Visitor& visitor() const { return visitor_; }
   const Statistics& statistics() const { return ctx_.stats; }
   std::size_t front_size() const { return front_.size(); }
-  bool is_front_valid() const { return front_.is_valid(stream_.ghost); }
+  bool is_front_valid() const { return front_.is_valid(stream_.ghost) && front_.reach_covers_edges(); }
 
 private:
   void clear_state();

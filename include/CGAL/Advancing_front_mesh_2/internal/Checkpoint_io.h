@@ -299,6 +299,7 @@ void Checkpoint_io<F, V, T>::read_state(Binary_reader& r)
   load_ghosts(t);
   check_consistency(t);
   front_.rebuild_hubs();
+  t.check(front_.reach_covers_edges(), "point quadtree");
 }
 
 // The vertices anything refers to (the active ones, those of the faces in
@@ -322,10 +323,16 @@ void Checkpoint_io<F, V, T>::number_handles(Numbering& n)
     n.number(c.first);
     n.number(c.second);
   });
+  // the hubs' other end points, in the order of the hubs' codes (the hubs
+  // were numbered with their circles above), not in the map's order of
+  // addresses: the same run writes the same bytes
+  std::vector<std::pair<std::uint32_t, const std::vector<Vertex_handle>*> > hubs;
   visibility_.constraint_hubs.for_each([&](const Vertex_handle& hub, const std::vector<Vertex_handle>& others) {
-    n.number(hub);
-    for(const Vertex_handle& w : others) n.number(w);
+    hubs.emplace_back(n.vertex_code(hub), &others);
   });
+  std::sort(hubs.begin(), hubs.end());
+  for(const auto& h : hubs)
+    for(const Vertex_handle& w : *h.second) n.number(w);
 }
 
 template <class F, class V, class T>
@@ -653,11 +660,13 @@ void Checkpoint_io<F, V, T>::load_search_structures(Tables& t)
       t.check(hub == hub_codes[std::size_t(i)], "constraint hub");
       t.r.read_vector(codes, big);
       std::vector<Vertex_handle> others;
+      const Vertex_handle hv = t.vertex_at(hub);
       for(std::uint32_t c : codes) {
-        t.check(c != hub, "constraint hub");
+        // a constraint of no length would have no direction to sort by
+        t.check(c != hub && t.vertex_at(c)->point() != hv->point(), "constraint hub");
         others.push_back(t.vertex_at(c));
       }
-      visibility_.constraint_hubs.add(t.vertex_at(hub), std::move(others), ctx_.pred);
+      visibility_.constraint_hubs.add(hv, std::move(others), ctx_.pred);
     }
   }
 }
@@ -703,6 +712,8 @@ void Checkpoint_io<F, V, T>::check_consistency(const Tables& t) const
     if(!t.is_free[v]) t.check(front_.active_points.contains(v), "point quadtree");
   front_.edges.for_each([&](Edge_key k, const Front_edge&) {
     t.check(!t.is_free[F::source(k)] && !t.is_free[F::target(k)], "front edge");
+    // of positive length: the edges at a hub are sorted by direction
+    t.check(front_.point(F::source(k)) != front_.point(F::target(k)), "front edge");
   });
   t.check(front_.active_points.size() == front_.ids.size(), "point quadtree");
   // the circle index holds exactly the circles of the face records, and a

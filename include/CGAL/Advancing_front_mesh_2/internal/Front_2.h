@@ -144,6 +144,7 @@ public:
   // ------------------------------------------------------------- memory
   void release_unused_memory();
   bool is_valid(Face_handle ghost) const;
+  bool reach_covers_edges() const;
 
   // The changes since the neighbourhood was gathered (Neighbourhood.h)
   // and in this step (Pockets.h).
@@ -308,9 +309,13 @@ void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_ind
     if(hubs.contains(u)) hubs.insert(u, v, true, point_of, ctx_.pred);
     if(hubs.contains(v)) hubs.insert(v, u, false, point_of, ctx_.pred);
   }
-  // the edge is found through its source, or through the hub it meets
-  const Vid finder = hubs.contains(v) && !hubs.contains(u) ? v : u;
-  if(!(len <= active_points.reach(finder))) active_points.set_reach(finder, len);
+  // The edge is found through its source unless it enters a hub, and
+  // through that hub in any case: a hub's reach covers all its edges, also
+  // those from another hub (when the source stops being a hub, its reach
+  // stops counting the edge).
+  const bool into_hub = hubs.contains(v);
+  if(into_hub && !(len <= active_points.reach(v))) active_points.set_reach(v, len);
+  if((!into_hub || hubs.contains(u)) && !(len <= active_points.reach(u))) active_points.set_reach(u, len);
   if(out[u].size() == hubs.min_out_degree) update_hub(u);
   if(behind != Face_handle() && behind->is_in_domain()) count_edge_behind(behind, v, apex, u);
   queue.push(Queue_entry{len, key(u, v), fe.version, fe.level});
@@ -561,6 +566,23 @@ bool Front_2<C, P, F>::is_valid(Face_handle ghost) const
     }
   }
   return counted == edges.size();
+}
+
+// Does the close-point search find every front edge (O(front size))? An
+// edge is found through its source, unless it enters a hub, and through a
+// hub at either end: their reach must cover it. (Separate from is_valid():
+// a checkpoint's hubs are rebuilt only after that has passed.)
+template <class C, class P, class F>
+bool Front_2<C, P, F>::reach_covers_edges() const
+{
+  bool ok = true;
+  edges.for_each([&](Edge_key k, const Front_edge&) {
+    const Vid v = source(k), w = target(k);
+    const double len = edge_length(v, w);
+    if(hubs.contains(w) && !(len <= active_points.reach(w))) ok = false;
+    if((!hubs.contains(w) || hubs.contains(v)) && !(len <= active_points.reach(v))) ok = false;
+  });
+  return ok;
 }
 
 } // namespace internal

@@ -93,6 +93,7 @@ public:
   bool close_or_clamp(Vid a, Vid b, Vid w, const Edge_frame& e, double& d);
   void close_on_existing_point(Vid a, Vid b, Vid c);
   void forced_closure(Vid a, Vid b);
+  void forced_closure_in_growing_disks(Vid a, Vid b, double r);
   bool is_acceptable_point(Vid a, Vid b, const Point& p, double px, double py, double d) const;
 
 private:
@@ -193,6 +194,10 @@ void Point_placement<Front, V, T, S>::close_on_existing_point(Vid a, Vid b, Vid 
 // from a short edge: the end of a star's spoke closed on the star's centre
 // gathered a third of the 4,000 spoke ends every time. After a few rounds
 // h at least doubles, so that ever higher apexes still end the search soon.
+// The circles never reach behind the edge, so they cannot end the search by
+// holding every vertex: when an apex's height is not a number (a, b and it
+// nearly in line), or h has doubled past any domain, the search ends in
+// disks about the midpoint that grow until they hold everything.
 template <class Front, class V, class T, class S>
 void Point_placement<Front, V, T, S>::forced_closure(Vid a, Vid b)
 {
@@ -204,27 +209,53 @@ void Point_placement<Front, V, T, S>::forced_closure(Vid a, Vid b)
   // search started with before, but ahead of the edge, where the apexes
   // whose closure is forced mostly lie
   double h = L;
-  for(int round = 0;; ++round) {
+  for(int round = 0; round < 64; ++round) {
     const double r = length(h, 0.5 * L) * (1 + 1e-9);
+    if(!std::isfinite(r)) break;
     neighbourhood_.gather(mx + h * nx, my + h * ny, r);
-    // the search is exhaustive once it holds every active vertex (or its
-    // radius stopped being a number): the loop ends on that, not on a count
-    const bool everything = neighbourhood_.vertices.size() >= front_.active_points.size() || !std::isfinite(r);
     const Vid w = apex_(a, b, neighbourhood_);
     if(w != no_vertex) {
       const Circle c = circle_of(ax, ay, bx, by, front_.x(w), front_.y(w));
       const double height = (c.cx - mx) * nx + (c.cy - my) * ny;
-      if(height <= h || everything) {
+      if(!std::isfinite(height)) break;
+      if(height <= h) {
         close_on_existing_point(a, b, w);
         return;
       }
       h = (std::max)(round < 3 ? h : 2 * h, height);
     } else {
+      h *= 2;
+    }
+  }
+  forced_closure_in_growing_disks(a, b, (std::max)(L, 2 * h));
+}
+
+// The search of forced_closure() in disks about the edge's midpoint, from
+// radius r on, doubled until the apex's circle lies inside; it is
+// exhaustive once the disk holds every active vertex (or its radius stopped
+// being a number): the loop ends on that, not on a count.
+template <class Front, class V, class T, class S>
+void Point_placement<Front, V, T, S>::forced_closure_in_growing_disks(Vid a, Vid b, double r)
+{
+  const double mx = 0.5 * (front_.x(a) + front_.x(b)), my = 0.5 * (front_.y(a) + front_.y(b));
+  for(;;) {
+    neighbourhood_.gather(mx, my, r);
+    const bool everything = neighbourhood_.vertices.size() >= front_.active_points.size() || !std::isfinite(r);
+    const Vid w = apex_(a, b, neighbourhood_);
+    if(w != no_vertex) {
+      const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w));
+      const double needed = length(c.cx - mx, c.cy - my) + c.r;
+      if(needed <= r || everything) {
+        close_on_existing_point(a, b, w);
+        return;
+      }
+      r = (std::max)(2 * r, needed * (1 + 1e-9));
+    } else {
       if(everything) {
         throw std::logic_error("Advancing_front_mesher_2: internal error: a front edge has no "
                                "visible apex (the front is inconsistent)");
       }
-      h *= 2;
+      r *= 2;
     }
   }
 }
