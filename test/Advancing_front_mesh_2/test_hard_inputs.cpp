@@ -213,6 +213,60 @@ AFM_TEST_CASE(test_hard_input_constraint_star_centre_costs_no_more_with_more_spo
                 "orientation tests per triangle " << per_triangle[0] << " -> " << per_triangle[1]);
 }
 
+// The input checks at a point where many segments meet leave that point's
+// pairs out of the box test (Poly_graph_checks.h): overlaps along a spoke,
+// crossings of a spoke, crossings between two stars' spokes are still found
+// and name the same pair as before; more than 16 such points take the plain
+// box test.
+AFM_TEST_CASE(test_hard_input_star_input_checks_still_find_every_problem)
+{
+  namespace IO = CGAL::Advancing_front_mesh_2::IO;
+  typedef afm_test::Types<Epick>::CDT CDT;
+  auto problem = [](const Poly_data& in) -> std::string {
+    CDT cdt;
+    try {
+      IO::insert_poly(cdt, in);
+    } catch(const IO::Poly_read_error& e) {
+      return e.problem();
+    }
+    return "accepted";
+  };
+  auto starts = [](const std::string& s, const std::string& prefix) { return s.compare(0, prefix.size(), prefix) == 0; };
+  Poly_data overlap = afm_hard_inputs::constraint_star(64);
+  overlap.points.push_back({{0.25, 0.}}); // along spoke 0, segment 4
+  overlap.segments.push_back({{0, overlap.points.size() - 1}});
+  AFM_CHECK_MSG(starts(problem(overlap), "segment 68 overlaps segment 4"), problem(overlap));
+  Poly_data crossing = afm_hard_inputs::constraint_star(64);
+  crossing.points.push_back({{0.2, -0.1}});
+  crossing.points.push_back({{0.2, 0.1}});
+  crossing.segments.push_back({{crossing.points.size() - 2, crossing.points.size() - 1}});
+  AFM_CHECK_MSG(starts(problem(crossing), "segment 68 crosses segment 4"), problem(crossing));
+  // many stars of 40 spokes in a row, and a spoke of one crossing one of the
+  // next: 2 hubs (the fast path), then 20 (the plain box test)
+  for(const int stars : {2, 20}) {
+    Poly_data in;
+    in.points = {{{-1., -1.}}, {{2. * stars + 1, -1.}}, {{2. * stars + 1, 1.}}, {{-1., 1.}}};
+    in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}};
+    const double pi = 3.14159265358979323846;
+    for(int c = 0; c < stars; ++c) {
+      const std::size_t centre = in.points.size();
+      in.points.push_back({{2. * c, 0.}});
+      for(int k = 0; k < 40; ++k) {
+        const double a = 2 * pi * (k + 0.5) / 40;
+        in.points.push_back({{2. * c + 0.9 * std::cos(a), 0.9 * std::sin(a)}});
+        in.segments.push_back({{centre, in.points.size() - 1}});
+      }
+    }
+    AFM_CHECK_MSG(problem(in) == "accepted", stars << " stars: " << problem(in));
+    // the right-hand spoke of star 0 nearest the x axis, made long enough
+    // to cross the left-hand spokes of star 1
+    in.points[5] = {{1.5, 0.2}};
+    const std::string p = problem(in);
+    AFM_CHECK_MSG(p.find(" crosses segment ") != std::string::npos, stars << " stars: " << p);
+    std::cout << "  " << stars << " stars of 40 spokes, one spoke too long: " << p << "\n";
+  }
+}
+
 // Two hubs joined by a one-sided front edge: two fans of 40 constraints on
 // the bottom side of the unit square, whose centres are consecutive boundary
 // points, so that hubs come and go next to each other. The front's

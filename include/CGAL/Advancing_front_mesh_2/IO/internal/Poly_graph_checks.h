@@ -14,6 +14,7 @@
 
 #include <CGAL/Advancing_front_mesh_2/IO/Poly_data.h>
 #include <CGAL/Advancing_front_mesh_2/IO/Poly_read_error.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_predicates.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -299,16 +300,10 @@ inline void poly_offer_pair_problem(const Poly_graph& g, std::size_t i, std::siz
 inline void poly_offer_overlaps_at_point(const Poly_graph& g, std::size_t c, std::vector<std::size_t>& at,
                                          Poly_problem& problem)
 {
-  const Poly_graph::Ek ek;
-  const auto orientation = ek.orientation_2_object();
+  const Advancing_front_mesh_2::internal::Front_predicates<Poly_graph::Ek> pred;
   const Poly_graph::Ep pc = g.ep(c);
   auto other = [&](std::size_t i) { return g.ep(g.seg_a(i) == c ? g.seg_b(i) : g.seg_a(i)); };
-  auto upper = [&](const Poly_graph::Ep& p) { return p.y() > pc.y() || (p.y() == pc.y() && p.x() > pc.x()); };
-  auto before = [&](std::size_t i, std::size_t j) {
-    const Poly_graph::Ep pi = other(i), pj = other(j);
-    if(upper(pi) != upper(pj)) return upper(pi);
-    return orientation(pc, pi, pj) == CGAL::LEFT_TURN;
-  };
+  auto before = [&](std::size_t i, std::size_t j) { return pred.direction_before(pc, other(i), other(j)); };
   std::sort(at.begin(), at.end(), before);
   for(std::size_t k = 0; k < at.size();) {
     std::size_t end = k + 1;
