@@ -14,7 +14,10 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Front_predicates.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cmath>
@@ -1384,4 +1387,49 @@ AFM_TEST_CASE(test_internal_circle_index_models_agree)
       AFM_CHECK(octree.size() == items.size() && brute_force.size() == items.size());
     }
   }
+}
+
+// Front_predicates with Simple_cartesian<Exact_rational> answers
+// orientation, angle and in-circle with Epick's predicates on the doubles
+// when told that every coordinate is a double: the same answers as the
+// rational ones, on exactly collinear and cocircular points and on points
+// a few units in the last place from them, where a double computation
+// without a filter errs.
+AFM_TEST_CASE(test_internal_front_predicates_on_doubles)
+{
+  typedef CGAL::Simple_cartesian<CGAL::Exact_rational> RK;
+  typedef RK::Point_2 P;
+  typedef CGAL::Advancing_front_mesh_2::internal::Front_predicates<RK> Predicates;
+  Predicates exact, on_doubles;
+  on_doubles.set_coordinates_are_doubles(true);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> ulps(-3, 3);
+  auto nudge = [&](double v) {
+    for(int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) v = std::nextafter(v, k > 0 ? 2. : -2.);
+    return v;
+  };
+  std::size_t degenerate = 0;
+  for(int i = 0; i < 20000; ++i) {
+    // a and b on a grid and t a multiple of 1/8, so that c, on the line ab
+    // before its nudge, is exactly there
+    auto grid = [&]() { return std::round(unit(rng) * 1024) / 1024; };
+    const P a(grid(), grid()), b(grid(), grid());
+    const double t = std::round(unit(rng) * 8) / 8;
+    const double lx = CGAL::to_double(a.x()) + t * CGAL::to_double(b.x() - a.x());
+    const double ly = CGAL::to_double(a.y()) + t * CGAL::to_double(b.y() - a.y());
+    const P c(nudge(lx), nudge(ly));
+    const P d = i % 2 ? P(nudge(CGAL::to_double(b.x())), nudge(CGAL::to_double(a.y()))) : P(unit(rng), unit(rng));
+    const P e(CGAL::to_double(a.x()) + CGAL::to_double(b.x()) - CGAL::to_double(d.x()),
+              CGAL::to_double(a.y()) + CGAL::to_double(b.y()) - CGAL::to_double(d.y()));
+    // (a, d, b, e is a parallelogram; a rectangle, so cocircular, when d is not nudged)
+    AFM_CHECK(exact.orientation(a, b, c) == on_doubles.orientation(a, b, c));
+    AFM_CHECK(exact.turns_before(a, b, c, d) == on_doubles.turns_before(a, b, c, d));
+    AFM_CHECK(exact.overlap_from_shared_end(a, b, c) == on_doubles.overlap_from_shared_end(a, b, c));
+    for(const P& q : {c, d, e})
+      AFM_CHECK(exact.strictly_inside_circle(a, b, d, q) == on_doubles.strictly_inside_circle(a, b, d, q));
+    if(exact.orientation(a, b, c) == CGAL::COLLINEAR) ++degenerate;
+  }
+  std::cout << "  " << degenerate << " exactly collinear triples of 20,000\n";
+  AFM_CHECK(degenerate > 100);
 }

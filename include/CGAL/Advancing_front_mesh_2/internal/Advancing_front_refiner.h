@@ -218,7 +218,7 @@ void Advancing_front_refiner<Tr, S, V, P, C>::init(On_init on_init)
   }
   CGAL::Delaunay_mesher_2<Tr, CGAL::Delaunay_mesh_criteria_2<Tr> >::mark_facets(ctx_.tr, seeds.begin(), seeds.end(),
                                                                                 seeds_mark);
-  ctx_.scaling = Coordinate_scaling<Point>::for_triangulation(ctx_.tr);
+  ctx_.set_scaling(Coordinate_scaling<Point>::for_triangulation(ctx_.tr));
   finished_ = !initial_front_.build();
   if(stream_.is_streaming() && !finished_) {
     // the face that stands for faces gone to the sink: not in the domain,

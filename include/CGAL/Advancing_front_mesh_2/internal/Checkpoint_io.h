@@ -366,7 +366,10 @@ void Checkpoint_io<F, V, T>::load_scalars(Binary_reader& r)
     const double origin_x = r.read<double>();
     const double origin_y = r.read<double>();
     if(!std::isfinite(origin_x) || !std::isfinite(origin_y)) r.fail("an origin that is not finite");
-    ctx_.scaling.set(exponent, origin_x, origin_y);
+    Coordinate_scaling<Point> scaling;
+    scaling.set(exponent, origin_x, origin_y);
+    scaling.set_exact(true); // a checkpoint stores every vertex's coordinates as doubles
+    ctx_.set_scaling(scaling);
   }
   triangles_.domain_area = r.read<double>();
   triangles_.meshed_area = r.read<double>();

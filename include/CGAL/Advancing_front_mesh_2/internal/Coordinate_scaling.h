@@ -60,6 +60,15 @@ public:
     origin_y_ = origin_y;
   }
 
+  // Are the internal coordinates the points themselves, moved and scaled
+  // exactly? So with doubles (up to the rounding of the origin's
+  // subtraction and the scaling, ruled out above), and with another number
+  // type when every vertex's coordinates are doubles: the mesher makes its
+  // points from doubles. Exact internal coordinates let the mesher bound
+  // its double computations rigorously and answer predicates in doubles.
+  bool exact() const { return std::is_same<FT, double>::value || exact_; }
+  void set_exact(bool e) { exact_ = e; }
+
   // a length (a size, a radius): scaled, not moved
   double to_internal_length(const FT& v) const { return scaled(CGAL::to_double(v)); }
   double ix(const Point& p) const { return scaled(CGAL::to_double(p.x()) - origin_x_); }
@@ -86,7 +95,8 @@ public:
       first = false;
     }
     Coordinate_scaling s;
-    if(coordinates_are_doubles(tr)) {
+    s.exact_ = coordinates_are_doubles(tr);
+    if(s.exact_) {
       s.origin_x_ = origin_for(lo[0], hi[0]);
       s.origin_y_ = origin_for(lo[1], hi[1]);
     }
@@ -143,6 +153,7 @@ private:
 
   int exponent_ = 0;
   double origin_x_ = 0, origin_y_ = 0;
+  bool exact_ = false;
 };
 
 } // namespace internal

@@ -58,7 +58,20 @@ private:
     double high;           // an upper bound of the true height
   };
 
+  // the edge a -> b in internal coordinates, for the candidates' heights
+  struct Edge_frame
+  {
+    static constexpr double eps = 1e-15;
+    Edge_frame(const Context& ctx, const Front& front, Vid a, Vid b);
+    const Point& pa;
+    const Point& pb;
+    bool exact;
+    double xa, ya, xb, yb, mx, my, tx, ty, quarter_l2, half_length;
+    double e_t; // error bound of tx and ty
+  };
+
   void collect_candidates(Vid a, Vid b, const Neighbourhood& n, double max_centre_height);
+  bool evaluate(const Edge_frame& e, Vid c, Candidate& out) const;
   bool qualifies(Vid a, Vid b, Vid c) const;
   Vid lowest_visible_by_runs(Vid a, Vid b, const Neighbourhood& n);
 
@@ -96,65 +109,28 @@ template <class Front, class Visibility>
 void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Neighbourhood& n,
                                                           double max_centre_height)
 {
-  const Point& pa = front_.point(a);
-  const Point& pb = front_.point(b);
-  const double xa = front_.x(a), ya = front_.y(a), xb = front_.x(b), yb = front_.y(b);
-  const double mx = 0.5 * (xa + xb), my = 0.5 * (ya + yb);
-  const double tx = xb - xa, ty = yb - ya;
-  const double quarter_l2 = 0.25 * (tx * tx + ty * ty);
-  // heights below are centre heights in units of half the edge length
-  const double half_length = std::sqrt(quarter_l2);
-  // With other number types than double, the stored coordinates are only
-  // approximations (to_double of a lazy number may be off by 1e-5), so no
-  // candidate is dropped on their account.
-  const double cutoff = Context::double_coordinates ? max_centre_height / half_length
-                                                    : std::numeric_limits<double>::infinity();
+  const Edge_frame e(ctx_, front_, a, b);
+  // Unless every point's coordinates are doubles, the stored coordinates
+  // are only approximations (to_double of a lazy number may be off by
+  // 1e-5), so no candidate is dropped on their account.
+  const double cutoff = e.exact ? max_centre_height / e.half_length : std::numeric_limits<double>::infinity();
   candidates_.clear();
   dropped_.clear();
-  // Error bounds of the double computation below (a few units in the last
-  // place of every term, generously): each candidate's true height lies in
-  // [low, high]. A candidate is dropped only if its low bound is above the
-  // cut-off; if a kept one may lie above it (its high bound is), the
+  // A candidate is dropped only if its height's lower bound is above the
+  // cut-off; if a kept one may lie above it (its upper bound is), the
   // dropped ones it might not exclude are taken back, so the answer among
   // the kept candidates is the answer among all.
-  const double eps = 1e-15;
-  const double e_t = eps * (std::abs(xa) + std::abs(ya) + std::abs(xb) + std::abs(yb));
   double straddle = -std::numeric_limits<double>::infinity();
+  Candidate cand;
   for(std::size_t z : n.vertices) {
     const Vid c = Vid(z);
-    if(c == a || c == b) continue;
-    const double xc = front_.x(c), yc = front_.y(c);
-    // Points in line with an axis-parallel edge (boundary points on the
-    // sides of a box) are exactly collinear, where the filtered predicate
-    // falls back to exact arithmetic: with double coordinates, equal
-    // coordinates decide it at once.
-    if(Context::double_coordinates && ((ya == yb && yc == ya) || (xa == xb && xc == xa))) continue;
-    if(ctx_.pred.orientation(pa, pb, front_.point(c)) != LEFT_TURN) continue;
-    // with half the edge's length as unit: the circle through a, b and c
-    // has its centre at height num / v over the midpoint
-    const double dx = xc - mx, dy = yc - my;
-    const double u = dx * tx + dy * ty, v = dy * tx - dx * ty;
-    const double along2 = u * u / (4 * quarter_l2), across2 = v * v / (4 * quarter_l2);
-    const double num = along2 + across2 - quarter_l2;
-    const double e_d = eps * (std::abs(xc) + std::abs(yc) + std::abs(mx) + std::abs(my));
-    const double e_uv = e_d * (std::abs(tx) + std::abs(ty)) + e_t * (std::abs(dx) + std::abs(dy)) +
-                        eps * (std::abs(dx * tx) + std::abs(dy * ty) + std::abs(dy * tx) + std::abs(dx * ty));
-    const double e_num = (2 * (std::abs(u) + std::abs(v)) * e_uv + e_uv * e_uv) / (4 * quarter_l2) +
-                         eps * (along2 + across2 + quarter_l2) + 4 * eps * quarter_l2;
-    const double height = v > 0 ? num / v : 0;
-    const double low = (v + e_uv > 0 && num - e_num > 0) ? (num - e_num) / (v + e_uv)
-                                                        : -std::numeric_limits<double>::infinity();
-    // (a numerator that may be negative is divided by the larger denominator)
-    const double high = !(v - e_uv > 0) ? std::numeric_limits<double>::infinity()
-                        : num + e_num >= 0 ? (num + e_num) / (v - e_uv)
-                                           : (num + e_num) / (v + e_uv);
-    const Candidate cand{std::isfinite(height) ? height : 0., c, low, high};
-    if(low > cutoff && std::isfinite(low)) {
+    if(c == a || c == b || !evaluate(e, c, cand)) continue;
+    if(cand.low > cutoff && std::isfinite(cand.low)) {
       dropped_.push_back(cand);
     } else {
       candidates_.push_back(cand);
-      if(!(high <= cutoff))
-        straddle = (std::max)(straddle, std::isnan(high) ? std::numeric_limits<double>::infinity() : high);
+      if(!(cand.high <= cutoff))
+        straddle = (std::max)(straddle, std::isnan(cand.high) ? std::numeric_limits<double>::infinity() : cand.high);
     }
   }
   if(straddle > cutoff)
@@ -162,6 +138,67 @@ void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Ne
       if(!(d.low > straddle)) candidates_.push_back(d);
   std::sort(candidates_.begin(), candidates_.end(),
             [](const Candidate& p, const Candidate& q) { return p.height < q.height; });
+}
+
+// The edge a -> b as the height computations read it.
+template <class Front, class Visibility>
+Delaunay_apex<Front, Visibility>::Edge_frame::Edge_frame(const Context& ctx, const Front& front, Vid a_, Vid b_)
+  : pa(front.point(a_)), pb(front.point(b_)), exact(ctx.exact_coordinates())
+{
+  xa = front.x(a_), ya = front.y(a_), xb = front.x(b_), yb = front.y(b_);
+  mx = 0.5 * (xa + xb), my = 0.5 * (ya + yb);
+  tx = xb - xa, ty = yb - ya;
+  quarter_l2 = 0.25 * (tx * tx + ty * ty);
+  half_length = std::sqrt(quarter_l2);
+  e_t = eps * (std::abs(xa) + std::abs(ya) + std::abs(xb) + std::abs(yb));
+}
+
+// Candidate c of edge e, if it lies to the edge's left: the approximate
+// height of its circle's centre over the edge's midpoint, in units of half
+// the edge's length, and error bounds of the double computation (a few
+// units in the last place of every term, generously): the true height lies
+// in [low, high].
+template <class Front, class Visibility>
+bool Delaunay_apex<Front, Visibility>::evaluate(const Edge_frame& e, Vid c, Candidate& out) const
+{
+  const double eps = Edge_frame::eps;
+  const double xc = front_.x(c), yc = front_.y(c);
+  // Points in line with an axis-parallel edge (boundary points on the
+  // sides of a box) are exactly collinear, where the filtered predicate
+  // falls back to exact arithmetic: with exact coordinates, equal
+  // coordinates decide it at once.
+  if(e.exact && ((e.ya == e.yb && yc == e.ya) || (e.xa == e.xb && xc == e.xa))) return false;
+  // with half the edge's length as unit: the circle through a, b and c
+  // has its centre at height num / v over the midpoint
+  const double dx = xc - e.mx, dy = yc - e.my;
+  const double tx = e.tx, ty = e.ty, quarter_l2 = e.quarter_l2;
+  const double u = dx * tx + dy * ty, v = dy * tx - dx * ty;
+  const double e_d = eps * (std::abs(xc) + std::abs(yc) + std::abs(e.mx) + std::abs(e.my));
+  const double e_uv = e_d * (std::abs(tx) + std::abs(ty)) + e.e_t * (std::abs(dx) + std::abs(dy)) +
+                      eps * (std::abs(dx * tx) + std::abs(dy * ty) + std::abs(dy * tx) + std::abs(dx * ty));
+  // c must lie to the left of the edge. v is orientation(a, b, c)'s
+  // determinant, so with exact coordinates its error bound settles most
+  // candidates without the predicate (eps is 9 units in the last place,
+  // four times what the bound needs; a bound below 1e-290 might hide
+  // underflow, and the predicate decides)
+  if(e.exact && e_uv > 1e-290 && std::abs(v) > e_uv) {
+    if(v < 0) return false;
+  } else if(ctx_.pred.orientation(e.pa, e.pb, front_.point(c)) != LEFT_TURN) {
+    return false;
+  }
+  const double along2 = u * u / (4 * quarter_l2), across2 = v * v / (4 * quarter_l2);
+  const double num = along2 + across2 - quarter_l2;
+  const double e_num = (2 * (std::abs(u) + std::abs(v)) * e_uv + e_uv * e_uv) / (4 * quarter_l2) +
+                       eps * (along2 + across2 + quarter_l2) + 4 * eps * quarter_l2;
+  const double height = v > 0 ? num / v : 0;
+  const double low = (v + e_uv > 0 && num - e_num > 0) ? (num - e_num) / (v + e_uv)
+                                                      : -std::numeric_limits<double>::infinity();
+  // (a numerator that may be negative is divided by the larger denominator)
+  const double high = !(v - e_uv > 0) ? std::numeric_limits<double>::infinity()
+                      : num + e_num >= 0 ? (num + e_num) / (v - e_uv)
+                                         : (num + e_num) / (v + e_uv);
+  out = Candidate{std::isfinite(height) ? height : 0., c, low, high};
+  return true;
 }
 
 // The circles through a and b are nested on the unmeshed side of the edge:
@@ -182,11 +219,12 @@ typename Front::Vid Delaunay_apex<Front, Visibility>::lowest_visible_by_runs(Vid
   const Point& pa = front_.point(a);
   const Point& pb = front_.point(b);
   // the least lower bound from each candidate on (not a number: -infinity);
-  // with other number types than double the bounds are not bounds (see
+  // unless the coordinates are exact the bounds are not bounds (see
   // collect_candidates()), and all candidates make one run
+  const bool exact = ctx_.exact_coordinates();
   lowest_after_.assign(candidates_.size() + 1, std::numeric_limits<double>::infinity());
   for(std::size_t i = candidates_.size(); i-- > 0;)
-    lowest_after_[i] = (!Context::double_coordinates || std::isnan(candidates_[i].low))
+    lowest_after_[i] = (!exact || std::isnan(candidates_[i].low))
                          ? -std::numeric_limits<double>::infinity()
                          : (std::min)(lowest_after_[i + 1], candidates_[i].low);
   std::size_t run = 0;

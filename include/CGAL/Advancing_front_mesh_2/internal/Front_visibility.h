@@ -80,14 +80,17 @@ private:
   // far from a segment, and this test skips their exact tests.
   struct Segment_box
   {
-    // doubles are exact; CGAL promises to_double of other number types (a
-    // lazy exact number) only to a relative precision of 1e-5
-    static constexpr double relative_pad = Context::double_coordinates ? 1e-14 : 1e-5;
+    // exact coordinates are exact up to the rounding of the computations
+    // here; CGAL promises to_double of other numbers (a lazy exact number)
+    // only to a relative precision of 1e-5
+    static double relative_pad_for(bool exact_coordinates) { return exact_coordinates ? 1e-14 : 1e-5; }
+    double relative_pad;
     double x0, y0, x1, y1;
     double magnitude; // of the end points' coordinates
 
     // the end points' internal coordinates
-    Segment_box(double sx, double sy, double tx, double ty)
+    Segment_box(double sx, double sy, double tx, double ty, bool exact_coordinates)
+      : relative_pad(relative_pad_for(exact_coordinates))
     {
       magnitude = (std::max)({std::abs(sx), std::abs(sy), std::abs(tx), std::abs(ty)});
       const double pad = relative_pad * magnitude;
@@ -117,7 +120,7 @@ private:
 
     Union_box(const Segment_box& b1, const Segment_box& b2)
     {
-      const double pad = 2 * Segment_box::relative_pad * (std::max)(b1.magnitude, b2.magnitude);
+      const double pad = 2 * (std::max)(b1.relative_pad, b2.relative_pad) * (std::max)(b1.magnitude, b2.magnitude);
       x0 = (std::min)(b1.x0, b2.x0) - pad; x1 = (std::max)(b1.x1, b2.x1) + pad;
       y0 = (std::min)(b1.y0, b2.y0) - pad; y1 = (std::max)(b1.y1, b2.y1) + pad;
     }
@@ -350,7 +353,8 @@ bool Front_visibility<Front, C>::visible_from_both(Vid s1, const Point& ps1, Vid
   const bool open1 = !front_.is_front_segment(s1, t), open2 = !front_.is_front_segment(s2, t);
   if(!open1 && !open2) return true;
   const double tx = ctx_.ix(pt), ty = ctx_.iy(pt);
-  const Segment_box box1(ctx_.ix(ps1), ctx_.iy(ps1), tx, ty), box2(ctx_.ix(ps2), ctx_.iy(ps2), tx, ty);
+  const bool exact = ctx_.exact_coordinates();
+  const Segment_box box1(ctx_.ix(ps1), ctx_.iy(ps1), tx, ty, exact), box2(ctx_.ix(ps2), ctx_.iy(ps2), tx, ty, exact);
   const Union_box both(box1, box2);
   // every front edge that can block: those near the disk when it was
   // gathered, and those created since

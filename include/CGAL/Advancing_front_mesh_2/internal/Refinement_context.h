@@ -42,10 +42,18 @@ struct Refinement_context
   typedef typename Tds::Face Tds_face;
   typedef Phase_timer::Scope Phase_scope;
 
-  // the internal coordinates are exact (the kernel's number type is double)
-  static constexpr bool double_coordinates = std::is_same<FT, double>::value;
-
   explicit Refinement_context(Tr& t) : tr(t), pred(t.geom_traits()) {}
+
+  // the internal coordinates are the points, moved and scaled exactly
+  // (Coordinate_scaling::exact()): the double computations' error bounds
+  // then bound the true values
+  bool exact_coordinates() const { return scaling.exact(); }
+
+  void set_scaling(const Coordinate_scaling<Point>& s)
+  {
+    scaling = s;
+    pred.set_coordinates_are_doubles(s.exact());
+  }
 
   static int ccw(int i) { return (i + 1) % 3; }
   static int cw(int i) { return (i + 2) % 3; }
