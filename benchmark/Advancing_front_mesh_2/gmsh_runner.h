@@ -104,10 +104,16 @@ struct Gmsh_outcome
 };
 
 /// One Gmsh run: `algorithm` 6 (Frontal-Delaunay) or 5 (Delaunay); a
-/// uniform size `h` when `size` is empty, else the callback `size(x, y)`.
+/// uniform size `h` when `size` is empty, else the callback `size(x, y)`;
+/// or, when `extend_max` is positive, Gmsh's own size: the boundary mesh's
+/// spacing extended into the surface (Mesh.MeshSizeExtendFromBoundary, its
+/// default), bounded by `extend_max`. `smoothing`: the passes of Gmsh's
+/// vertex relocation after meshing (Mesh.Smoothing), negative for Gmsh's
+/// default (1).
 /// Timed: building the model and generate(2). Gmsh must be initialised.
 inline Gmsh_outcome run_gmsh(const Gmsh_geometry& g, int algorithm, double h,
-                             const std::function<double(double, double)>& size)
+                             const std::function<double(double, double)>& size, double extend_max = 0,
+                             int smoothing = -1)
 {
   namespace geo = gmsh::model::geo;
   const auto& pd = *g.in;
@@ -116,10 +122,16 @@ inline Gmsh_outcome run_gmsh(const Gmsh_geometry& g, int algorithm, double h,
   // every mesher runs on one thread
   gmsh::option::setNumber("General.NumThreads", 1);
   gmsh::option::setNumber("Mesh.Algorithm", algorithm);
+  gmsh::option::setNumber("Mesh.Smoothing", smoothing >= 0 ? smoothing : 1);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-  if(size) {
+  if(extend_max > 0) {
+    gmsh::model::mesh::removeSizeCallback();
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", extend_max);
+  } else if(size) {
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
     gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
     gmsh::model::mesh::setSizeCallback(
