@@ -12,259 +12,43 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
-#include <CGAL/Advancing_front_mesh_2/Smoothing_statistics.h>
-#include <CGAL/Advancing_front_mesh_2/internal/Double_geometry.h>
-#include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Star_smoother.h>
 
-#include <CGAL/assertions.h>
-#include <CGAL/enum.h>
-#include <CGAL/number_utils.h>
-#include <CGAL/property_map.h>
-#include <CGAL/use.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
-#include <utility>
+#include <array>
 #include <vector>
 
 namespace CGAL {
 namespace Advancing_front_mesh_2 {
 namespace internal {
 
-// Squared sine of the smallest angle, as Mesh_2's criteria measure shape:
-// the smallest angle faces the shortest edge, sin = 2 area / (b c) with b, c
-// the two longer edges.
-// Computed on lengths divided by the longest edge, against under- and overflow.
-inline double squared_sine_of_smallest_angle(double ax, double ay, double bx, double by, double cx, double cy)
+// The moves of CGAL::laplacian_smooth_mesh_2() (the paper's Fig. 13): the
+// centroid of the neighbours, then halfway there, the first that neither
+// lowers the star's worst radius ratio nor its worst smallest angle.
+struct Laplacian_moves
 {
-  const double longest = (std::max)({std::hypot(bx - cx, by - cy), std::hypot(cx - ax, cy - ay),
-                                     std::hypot(ax - bx, ay - by)});
-  if(!(longest > 0) || !std::isfinite(longest)) return 0;
-  const double ux = (bx - ax) / longest, uy = (by - ay) / longest, vx = (cx - ax) / longest, vy = (cy - ay) / longest;
-  const double wx = vx - ux, wy = vy - uy;
-  double l[3] = {wx * wx + wy * wy, vx * vx + vy * vy, ux * ux + uy * uy};
-  std::sort(l, l + 3);
-  const double area2 = ux * vy - uy * vx;
-  if(!(area2 > 0)) return 0;
-  const double q = area2 * area2 / (l[1] * l[2]);
-  return std::isfinite(q) ? q : 0.;
-}
+  static constexpr bool best_first = false;
 
-// The engine of CGAL::laplacian_smooth_mesh_2() (the paper's Fig. 13):
-// guarded moves of the interior vertices to their neighbours' centroid, each
-// followed by Lawson's flips about the vertex, undone with the move when a
-// triangle they made is worse than the star's worst before; a final Lawson
-// pass closes each pass. `Held` is a readable map from vertex handles to
-// bool: vertices mapped to true never move.
-template <class CDT, class Held>
-class Laplacian_smoother
-{
-public:
-  typedef typename CDT::Vertex_handle Vertex_handle;
-  typedef typename CDT::Face_handle Face_handle;
-  typedef typename CDT::Face_circulator Face_circulator;
-  typedef typename CDT::Vertex_circulator Vertex_circulator;
-  typedef typename CDT::Geom_traits::FT FT;
-  typedef typename CDT::Point Point;
-  // the worst radius ratio and the worst smallest angle (as a squared sine)
-  typedef std::pair<double, double> Quality;
-
-  Laplacian_smoother(CDT& cdt, const Held& held) : cdt_(cdt), held_(held) { find_movable_vertices(); }
-
-  void pass();
-  const Smoothing_statistics& statistics() const { return stats_; }
-
-private:
-  void find_movable_vertices();
-  bool try_move(Vertex_handle v);
-  Quality star_quality(const Point& p, bool& valid) const;
-  std::size_t flip_about(Vertex_handle v);
-  void undo_flips(std::size_t made);
-  Quality worst_of_changed_faces(Vertex_handle v) const;
-  static void account(Quality& worst, double ax, double ay, double bx, double by, double cx, double cy)
+  void candidates(double x, double y, const std::vector<std::array<double, 2> >& ring,
+                  std::vector<std::array<double, 2> >& out) const
   {
-    worst.first = (std::min)(worst.first, radius_ratio(ax, ay, bx, by, cx, cy));
-    worst.second = (std::min)(worst.second, squared_sine_of_smallest_angle(ax, ay, bx, by, cx, cy));
+    double sx = 0, sy = 0;
+    for(const auto& q : ring) {
+      sx += q[0];
+      sy += q[1];
+    }
+    const double n = static_cast<double>(ring.size());
+    out.push_back({{sx / n, sy / n}});
+    out.push_back({{0.5 * (x + sx / n), 0.5 * (y + sy / n)}});
   }
 
-  CDT& cdt_;
-  Held held_;
-  Smoothing_statistics stats_;
-  std::vector<Vertex_handle> movable_;
-  std::vector<Point> ring_; // the neighbours of the vertex being moved, counter-clockwise
-  // The flips after a move, recorded to undo them: the two faces of each,
-  // whose triangles changed, and the new diagonal, by its end points (a
-  // flip and its undoing may leave the two triangles in each other's face
-  // records, so later undoings cannot go by face handles).
-  std::vector<std::pair<Face_handle, Face_handle> > flipped_;
-  std::vector<std::pair<Vertex_handle, Vertex_handle> > diagonals_;
-  std::vector<typename CDT::Edge> to_check_;
-  std::size_t pass_flips_ = 0;
+  bool acceptable(const Star_quality& after, const Star_quality& before) const
+  {
+    return after.worst_ratio >= before.worst_ratio && after.worst_sine2 >= before.worst_sine2;
+  }
 };
 
-// The vertices that may move: interior (all faces about them finite and in
-// the domain), on no constrained edge, not held.
 template <class CDT, class Held>
-void Laplacian_smoother<CDT, Held>::find_movable_vertices()
-{
-  for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v) {
-    if(get(held_, Vertex_handle(v)) || cdt_.are_there_incident_constraints(v)) continue;
-    bool interior = true;
-    Face_circulator fc = cdt_.incident_faces(v), done = fc;
-    if(fc == nullptr) continue;
-    do {
-      if(cdt_.is_infinite(fc) || !fc->is_in_domain()) {
-        interior = false;
-        break;
-      }
-    } while(++fc != done);
-    if(interior) movable_.push_back(v);
-  }
-  stats_.movable_vertices = movable_.size();
-}
-
-template <class CDT, class Held>
-void Laplacian_smoother<CDT, Held>::pass()
-{
-  for(Vertex_handle v : movable_)
-    if(try_move(v)) ++stats_.moves;
-  // nothing is expected to need a flip here: kept as a safety net
-  const std::size_t flips = pass_flips_ + restore_constrained_delaunay(cdt_);
-  pass_flips_ = 0;
-  stats_.flips += flips;
-  stats_.flips_per_pass.push_back(flips);
-  ++stats_.passes;
-}
-
-// Tries v at its neighbours' centroid, then halfway there; a move stands if
-// the star stays positively oriented and neither measure of its worst
-// triangle decreases, flips included.
-template <class CDT, class Held>
-bool Laplacian_smoother<CDT, Held>::try_move(Vertex_handle v)
-{
-  ring_.clear();
-  Vertex_circulator vc = cdt_.incident_vertices(v), done = vc;
-  // The new position is computed in double: with exact number types a
-  // position built from positions built from ... would grow without bound
-  // over the passes (the guard's orientation test stays exact).
-  double sx = 0, sy = 0;
-  do {
-    ring_.push_back(vc->point());
-    sx += CGAL::to_double(vc->point().x());
-    sy += CGAL::to_double(vc->point().y());
-  } while(++vc != done);
-  const double n = static_cast<double>(ring_.size());
-  const Point old = v->point();
-  const double ox = CGAL::to_double(old.x()), oy = CGAL::to_double(old.y());
-  const Point target(FT(sx / n), FT(sy / n));
-  const Point halfway(FT(0.5 * (ox + sx / n)), FT(0.5 * (oy + sy / n)));
-  bool valid = false;
-  const Quality before = star_quality(old, valid);
-  for(const Point& candidate : {target, halfway}) {
-    const Quality after = star_quality(candidate, valid);
-    if(valid && after.first >= before.first && after.second >= before.second) {
-      v->set_point(candidate);
-      // The move may call for flips, and Lawson's flips keep the smallest
-      // angle from decreasing but not the radius ratio: the flips are made
-      // now, and the move is undone (flips included) if a triangle they
-      // made is worse than the star's worst before.
-      const std::size_t made = flip_about(v);
-      // without flips the star was judged above (and the face order could
-      // change the last bit of a ratio)
-      const Quality changed = made == 0 ? after : worst_of_changed_faces(v);
-      if(changed.first >= before.first && changed.second >= before.second) {
-        pass_flips_ += made;
-        return true;
-      }
-      undo_flips(made);
-      v->set_point(old);
-    }
-    ++stats_.rejected_moves;
-  }
-  return false;
-}
-
-// The quality of the star of the vertex placed at p; `valid` is false if a
-// triangle would not be positively oriented.
-template <class CDT, class Held>
-typename Laplacian_smoother<CDT, Held>::Quality Laplacian_smoother<CDT, Held>::star_quality(const Point& p,
-                                                                                          bool& valid) const
-{
-  const auto orientation = cdt_.geom_traits().orientation_2_object();
-  // each consecutive pair of the ring and p form one triangle of the star
-  Quality worst(1., 1.);
-  valid = true;
-  const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
-  for(std::size_t k = 0; k < ring_.size(); ++k) {
-    const Point& a = ring_[k];
-    const Point& b = ring_[(k + 1) % ring_.size()];
-    if(orientation(p, a, b) != CGAL::LEFT_TURN) {
-      valid = false;
-      return worst;
-    }
-    account(worst, px, py, CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(b.x()),
-            CGAL::to_double(b.y()));
-  }
-  return worst;
-}
-
-// Lawson's flips after the move of v: the edges of its star and of the
-// star's ring first, then those of each flipped pair; recorded.
-template <class CDT, class Held>
-std::size_t Laplacian_smoother<CDT, Held>::flip_about(Vertex_handle v)
-{
-  flipped_.clear();
-  diagonals_.clear();
-  to_check_.clear();
-  Face_circulator fc = cdt_.incident_faces(v), done = fc;
-  do {
-    for(int k = 0; k < 3; ++k) to_check_.emplace_back(fc, k);
-  } while(++fc != done);
-  return lawson_flips(cdt_, to_check_, [&](Face_handle f, Face_handle g) {
-    flipped_.emplace_back(f, g);
-    const int j = f->index(g);
-    diagonals_.emplace_back(f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j)));
-  });
-}
-
-template <class CDT, class Held>
-void Laplacian_smoother<CDT, Held>::undo_flips(std::size_t made)
-{
-  for(std::size_t k = made; k-- > 0;) {
-    // flipping the new diagonal back
-    Face_handle f;
-    int i = 0;
-    const bool found = cdt_.is_edge(diagonals_[k].first, diagonals_[k].second, f, i);
-    CGAL_assertion(found);
-    CGAL_USE(found);
-    cdt_.flip(f, i);
-  }
-}
-
-// The quality of the faces about v and of the faces the flips changed
-// (some of which may have left v's star).
-template <class CDT, class Held>
-typename Laplacian_smoother<CDT, Held>::Quality
-Laplacian_smoother<CDT, Held>::worst_of_changed_faces(Vertex_handle v) const
-{
-  Quality worst(1., 1.);
-  auto face = [&worst](Face_handle f) {
-    double x[3], y[3];
-    for(int k = 0; k < 3; ++k) {
-      x[k] = CGAL::to_double(f->vertex(k)->point().x());
-      y[k] = CGAL::to_double(f->vertex(k)->point().y());
-    }
-    account(worst, x[0], y[0], x[1], y[1], x[2], y[2]);
-  };
-  Face_circulator fc = cdt_.incident_faces(v), done = fc;
-  do face(fc); while(++fc != done);
-  for(const auto& fg : flipped_) {
-    face(fg.first);
-    face(fg.second);
-  }
-  return worst;
-}
+using Laplacian_smoother = Star_smoother<CDT, Held, Laplacian_moves>;
 
 } // namespace internal
 } // namespace Advancing_front_mesh_2
