@@ -23,12 +23,14 @@
 // ("default"), so that each of ours compares with the like.
 //
 //   graded_quality --data ../shared/data [--smooth N] [--cases a,b,...] [--figures DIR]
+// (cases: square, holes, fig12, 30p30n, nlr, airfoil, lake)
 #include "bench_common.h"
 #ifdef AFM_WITH_GMSH
 #include "gmsh_runner.h"
 #endif
 
 #include "afm_geometries.h"
+#include "afm_paper_sources.h"
 #include "afm_shared_data.h"
 #include "afm_test_mesh.h"
 
@@ -36,6 +38,7 @@
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Sizing_field_mesh_criteria_2.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
+#include <CGAL/Advancing_front_mesh_2/quality_smooth_mesh_2.h>
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
@@ -75,8 +78,10 @@ struct Options
   std::string figures;
 };
 
-struct Window
+// A close-up picture of our mesh, raw and smoothed, coloured by quality.
+struct Figure
 {
+  std::string raw, smoothed; // file names without extension; empty: none
   double xmin, ymin, xmax, ymax;
 };
 
@@ -120,7 +125,7 @@ std::string verdict(const afm_check::Report& r)
   return r.ok ? std::string("valid") : "INVALID: " + r.summary().substr(0, 80);
 }
 
-void figure(const Options& o, const std::string& file, const CDT& cdt, const Window& w)
+void figure(const Options& o, const std::string& file, const CDT& cdt, const Figure& w)
 {
   if(o.figures.empty() || file.empty()) return;
   AFM::IO::SVG_options so;
@@ -137,7 +142,7 @@ void figure(const Options& o, const std::string& file, const CDT& cdt, const Win
 
 // Ours, then ours smoothed; returns the triangle count.
 std::size_t run_ours(const std::string& name, const Poly_data& in, const Size_function& size, const Options& o,
-                     const std::string& figure_name = "", const Window& window = Window())
+                     const Figure& fig = Figure())
 {
   auto sizing = [&size](const Point& p) { return K::FT(size(CGAL::to_double(p.x()), CGAL::to_double(p.y()))); };
   CDT cdt;
@@ -151,13 +156,23 @@ std::size_t run_ours(const std::string& name, const Poly_data& in, const Size_fu
   auto check = [&]() { return verdict(afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt))); };
   const afm_check::Mesh m = afm_test::extract_mesh(cdt);
   row(name, "ours", m, seconds, check());
-  figure(o, figure_name, cdt, window);
+  figure(o, fig.raw, cdt, fig);
   if(o.smooth > 0) {
-    t = std::chrono::steady_clock::now();
-    CGAL::laplacian_smooth_mesh_2(cdt, CGAL::parameters::number_of_iterations(std::size_t(o.smooth)));
-    row(name, "ours + Laplacian smoothing (" + std::to_string(o.smooth) + ")", afm_test::extract_mesh(cdt),
-        seconds + seconds_since(t), check());
-    figure(o, figure_name.empty() ? "" : figure_name + "_smoothed", cdt, window);
+    const CDT raw = cdt;
+    for(const int passes : {1, o.smooth}) {
+      for(const bool quality : {false, true}) {
+        cdt = raw;
+        t = std::chrono::steady_clock::now();
+        const auto np = CGAL::parameters::number_of_iterations(std::size_t(passes));
+        if(quality) CGAL::quality_smooth_mesh_2(cdt, np);
+        else CGAL::laplacian_smooth_mesh_2(cdt, np);
+        row(name, std::string("ours + ") + (quality ? "quality" : "Laplacian") + " smoothing (" +
+                    std::to_string(passes) + (passes == 1 ? " pass)" : " passes)"),
+            afm_test::extract_mesh(cdt), seconds + seconds_since(t), check());
+        if(quality && passes == o.smooth) figure(o, fig.smoothed, cdt, fig);
+      }
+      if(o.smooth == 1) break;
+    }
   }
   return m.triangles.size();
 }
@@ -220,8 +235,14 @@ void run_mesh_2(const std::string& name, const Poly_data& in, const Size_functio
   t = std::chrono::steady_clock::now();
   CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = 10,
                               CGAL::parameters::seeds_begin = seeds.begin(), CGAL::parameters::seeds_end = seeds.end());
-  row(name, "Mesh_2 + Lloyd (10 iterations)", afm_test::extract_mesh(cdt), seconds + seconds_since(t), check());
-  (void)o;
+  const double lloyd = seconds_since(t);
+  row(name, "Mesh_2 + Lloyd (10 iterations)", afm_test::extract_mesh(cdt), seconds + lloyd, check());
+  if(o.smooth > 0) {
+    t = std::chrono::steady_clock::now();
+    CGAL::quality_smooth_mesh_2(cdt, CGAL::parameters::number_of_iterations(std::size_t(o.smooth)));
+    row(name, "Mesh_2 + Lloyd + our quality smoothing (" + std::to_string(o.smooth) + " passes)",
+        afm_test::extract_mesh(cdt), seconds + lloyd + seconds_since(t), check());
+  }
 }
 
 #ifdef AFM_WITH_GMSH
@@ -264,10 +285,10 @@ void gmsh_own_extension(const std::string& name, const Poly_data& in, double h_m
 #endif
 
 void compare(const std::string& name, const Poly_data& in, const Size_function& size, double h_max,
-             const Options& o, const std::string& figure_name = "", const Window& window = Window())
+             const Options& o, const Figure& fig = Figure())
 {
   std::cerr << "== " << name << "\n";
-  const std::size_t n = run_ours(name, in, size, o, figure_name, window);
+  const std::size_t n = run_ours(name, in, size, o, fig);
 #ifdef AFM_WITH_GMSH
   gmsh_matched(name, in, size, n);
   if(h_max > 0) gmsh_own_extension(name, in, h_max);
@@ -284,15 +305,7 @@ Size_function as_function(const std::shared_ptr<Field>& field)
 void fig12(const Options& o)
 {
   const auto four = afm_geometry::multi_element_airfoil(15, 64);
-  std::vector<AFM::Size_source_2<K> > s;
-  for(int i = 0; i < 4; ++i) {
-    const double a = i * CGAL_PI / 2;
-    s.emplace_back(Point(0.5 + 15 * std::cos(a), 15 * std::sin(a)), 2 * CGAL_PI * 15 / 64);
-  }
-  for(const auto& p : std::vector<std::array<double, 3> >{{{-0.25, -0.05, 0.012}}, {{-0.03, -0.04, 0.008}},
-                                                         {{0.45, 0.15, 0.04}}, {{1.0, 0.02, 0.01}},
-                                                         {{1.25, -0.12, 0.015}}, {{1.45, -0.3, 0.03}}})
-    s.emplace_back(Point(p[0], p[1]), p[2]);
+  const auto s = afm_paper::figure_12_sources<K>(Point(0.5, 0), 15, 2 * CGAL_PI * 15 / 64);
   CDT cdt;
   afm_test::build_cdt(cdt, four);
   std::vector<std::pair<Point, K::FT> > spacing;
@@ -300,13 +313,13 @@ void fig12(const Options& o)
   AFM::Poisson_sizing_field_options opt;
   opt.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES; // the paper's field
   compare("four-element airfoil, Fig. 12 field", four, as_function(std::make_shared<Field>(spacing, s, opt)), 0, o,
-          "four_element_closeup", Window{-0.2, -0.4, 0.6, 0.1});
+          Figure{"", "four_element_quality_smoothed_closeup", -0.2, -0.4, 0.6, 0.1});
 }
 
 // afmesh_2's field without sources: the boundary spacing grown from the
 // boundary at the gradation rate, bounded above by h_max.
 void boundary_case(const std::string& name, const Poly_data& in, double h_max, const Options& o,
-                   const std::string& figure_name = "", const Window& window = Window())
+                   const Figure& fig = Figure())
 {
   CDT cdt;
   afm_test::build_cdt(cdt, in);
@@ -315,7 +328,7 @@ void boundary_case(const std::string& name, const Poly_data& in, double h_max, c
   AFM::Poisson_sizing_field_options opt;
   opt.max_size = h_max;
   compare(name, in, as_function(std::make_shared<Field>(spacing, std::vector<AFM::Size_source_2<K> >(), opt)), h_max,
-          o, figure_name, window);
+          o, fig);
 }
 
 } // namespace
@@ -332,7 +345,7 @@ int main(int argc, char* argv[])
     else if(a == "--cases" && i + 1 < argc) o.cases = argv[++i];
     else if(a == "--figures" && i + 1 < argc) o.figures = argv[++i];
     else {
-      std::cerr << "usage: graded_quality --data DIR [--smooth N] [--cases square,fig12,30p30n,nlr,airfoil,lake]"
+      std::cerr << "usage: graded_quality --data DIR [--smooth N] [--cases square,holes,fig12,30p30n,nlr,airfoil,lake]"
                    " [--figures DIR]\n";
       return 2;
     }
@@ -353,11 +366,17 @@ int main(int argc, char* argv[])
     compare("square with hole, h = 0.005", afm_geometry::square_with_circular_hole(1.0, 0.25, h),
             [h](double, double) { return h; }, 0, o);
   }
+  if(wanted(o, "holes")) {
+    const auto holes = afm_geometry::many_holes(40, 1);
+    compare("many holes (40), h = 0.02", holes, [](double, double) { return 0.02; }, 0, o);
+    boundary_case("many holes (40), boundary spacing, max 0.02", holes, 0.02, o);
+  }
   if(wanted(o, "fig12")) fig12(o);
   if(!o.data.empty()) {
     if(wanted(o, "30p30n"))
       boundary_case("30P-30N, boundary spacing, max 1", afm_shared_data::thirty_p_thirty_n(o.data), 1.0, o,
-                    "thirty_p_thirty_n_closeup", Window{-0.15, -0.2, 0.35, 0.12});
+                    Figure{"thirty_p_thirty_n_boundary_field_closeup", "thirty_p_thirty_n_boundary_field_smoothed_closeup",
+                           -0.15, -0.2, 0.35, 0.12});
     if(wanted(o, "nlr"))
       boundary_case("NLR 7301 with flap, boundary spacing, max 1", afm_shared_data::nlr7301_with_flap(o.data), 1.0, o);
     if(wanted(o, "airfoil"))

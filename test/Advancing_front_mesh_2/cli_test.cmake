@@ -110,7 +110,7 @@ expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --boundary-spacing grow --grading of
 # smoothing, quality report, pictures coloured by quality, histogram
 expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth 3 --report -o ${WORK_DIR}/sq_smooth.off
             -o ${WORK_DIR}/sq_quality.svg --svg-color quality --histogram ${WORK_DIR}/sq_hist.svg)
-if(NOT LAST_OUT MATCHES "3 smoothing passes.*radius ratio 2r/R: min .*% above 0.9.*angles: .*edge length / h: ")
+if(NOT LAST_OUT MATCHES "3 quality smoothing passes.*radius ratio 2r/R: min .*% above 0.9.*angles: .*edge length / h: ")
   message(FATAL_ERROR "--report did not print the quality summary: ${LAST_OUT}")
 endif()
 expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_smooth.off)
@@ -123,14 +123,21 @@ if(NOT svg MATCHES "radius ratio 2r/R")
   message(FATAL_ERROR "--histogram did not write the histogram")
 endif()
 expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth 2 --stats --report)
-if(NOT LAST_OUT MATCHES "^{.*\"radius_ratio_p1\".*\"share_edges_within_sqrt2\".*\"smoothing\":{\"passes\":2,")
+if(NOT LAST_OUT MATCHES "^{.*\"radius_ratio_p1\".*\"share_edges_within_sqrt2\".*\"smoothing\":{\"method\":\"quality\",\"passes\":2,")
   message(FATAL_ERROR "--stats lacks the quality figures: ${LAST_OUT}")
 endif()
+# the paper's smoother on request
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth 2 --smoother laplacian --stats -o ${WORK_DIR}/sq_lap.off)
+if(NOT LAST_OUT MATCHES "\"smoothing\":{\"method\":\"laplacian\",\"passes\":2,")
+  message(FATAL_ERROR "--smoother laplacian was not used: ${LAST_OUT}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_lap.off)
 
 # bad usage: exit 2
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --svg-color rainbow)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth -1)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth 1001)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --smooth 2 --smoother odt)
 expect_exit(2 ${AFMESH})
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --grading fast -o ${WORK_DIR}/x.off)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --grading -0.1 -o ${WORK_DIR}/x.off)

@@ -10,6 +10,7 @@
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/Streaming_mesh_writer.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
+#include <CGAL/Advancing_front_mesh_2/quality_smooth_mesh_2.h>
 
 #include <boost/property_map/function_property_map.hpp>
 
@@ -144,8 +145,8 @@ bool run_mesher(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_code& rc
   return true;
 }
 
-// --smooth N: the mesher's points move, the input's points (isolated ones
-// included) are held.
+// --smooth N with the --smoother: the mesher's points move, the input's
+// points (isolated ones included) are held.
 template <class K>
 AFM::Smoothing_statistics smooth(const Options& opt, Input<K>& in)
 {
@@ -155,8 +156,8 @@ AFM::Smoothing_statistics smooth(const Options& opt, Input<K>& in)
   std::set<typename CDT::Vertex_handle> input_vertices(vh.begin(), vh.end());
   auto held = boost::make_function_property_map<typename CDT::Vertex_handle>(
     [&](typename CDT::Vertex_handle v) { return input_vertices.count(v) > 0; });
-  return CGAL::laplacian_smooth_mesh_2(
-    in.cdt, CGAL::parameters::number_of_iterations(opt.smooth).vertex_is_constrained_map(held));
+  const auto np = CGAL::parameters::number_of_iterations(opt.smooth).vertex_is_constrained_map(held);
+  return opt.smoother == "laplacian" ? CGAL::laplacian_smooth_mesh_2(in.cdt, np) : CGAL::quality_smooth_mesh_2(in.cdt, np);
 }
 
 } // namespace afmesh_2

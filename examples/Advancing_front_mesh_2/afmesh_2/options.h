@@ -48,6 +48,7 @@ struct Options
   double time_limit = 0;     // seconds of meshing, 0: none
   std::size_t max_steps = 0; // front edges processed, 0: none
   std::size_t smooth = 0;
+  std::string smoother = "quality"; // or "laplacian"
   std::string svg_color = "plain";
   std::string histogram;
   bool stream = false;
@@ -112,7 +113,10 @@ inline po::options_description visible_options(Command_line& c)
     ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
      "CGAL kernel: epick (default), epeck or exact-rational")
     ("smooth", po::value<long long>(&c.smooth)->default_value(0),
-     "N passes (0 to 1000) of guarded Laplacian smoothing and Delaunay edge swapping after meshing")
+     "N passes (0 to 1000) of guarded smoothing and Delaunay edge swapping after meshing")
+    ("smoother", po::value<std::string>(&opt.smoother)->default_value("quality"),
+     "with --smooth: 'quality' (default), the best of Laplacian and optimal-Delaunay moves for each "
+     "vertex's triangles, or 'laplacian', the paper's (Fig. 13)")
     ("svg-color", po::value<std::string>(&opt.svg_color)->default_value("plain"),
      "SVG outputs: 'plain', or 'quality' to colour triangles by radius ratio")
     ("histogram", po::value<std::string>(&opt.histogram), "write the quality histograms as SVG to this file")
@@ -241,6 +245,8 @@ inline void check_new_run(Command_line& c)
   // read as a signed number: Boost reads "-1" into an unsigned as its largest value
   if(c.smooth < 0 || c.smooth > 1000) throw Usage_error("--smooth must be a number of passes from 0 to 1000");
   opt.smooth = std::size_t(c.smooth);
+  if(opt.smoother != "quality" && opt.smoother != "laplacian")
+    throw Usage_error("--smoother must be quality or laplacian, not '" + opt.smoother + "'");
   check_limits(c);
   opt.max_steps = std::size_t(c.max_steps);
   if(opt.svg_color != "plain" && opt.svg_color != "quality")

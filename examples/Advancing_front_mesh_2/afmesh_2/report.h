@@ -70,7 +70,7 @@ inline void print_report(const Options& opt, const AFM::Statistics& st, const AF
   os << opt.input << ": " << st.number_of_vertices << " vertices, " << q.number_of_triangles << " triangles in "
      << t.meshing << " s (" << (t.meshing > 0 ? st.number_of_faces / t.meshing : 0) << " triangles/s)";
   if(opt.smooth > 0)
-    os << ", then " << smoothing.passes << " smoothing passes in " << t.smoothing << " s (" << smoothing.moves
+    os << ", then " << smoothing.passes << " " << opt.smoother << " smoothing passes in " << t.smoothing << " s (" << smoothing.moves
        << " moves, " << smoothing.flips << " flips)";
   os << "\n";
   auto line = [&](const char* when, const AFM::Mesh_quality& m) {
@@ -205,7 +205,8 @@ Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_co
   j["statistics"] = mesher_statistics_json(st);
   j["peak_rss_bytes"] = number(peak_rss_bytes());
   j["quality"] = quality_json(q);
-  j["smoothing"] = Json{{"passes", smoothing.passes},
+  j["smoothing"] = Json{{"method", opt.smoother},
+                        {"passes", smoothing.passes},
                         {"moves", smoothing.moves},
                         {"rejected_moves", smoothing.rejected_moves},
                         {"flips", smoothing.flips}};

@@ -21,14 +21,14 @@ namespace Advancing_front_mesh_2 {
 /*!
 \ingroup PkgAdvancingFrontMesh2Ref
 
-What `CGAL::laplacian_smooth_mesh_2()` did.
+What `CGAL::laplacian_smooth_mesh_2()` or `CGAL::quality_smooth_mesh_2()` did.
 */
 struct Smoothing_statistics
 {
   std::size_t passes = 0;                   ///< smoothing + swapping alternations done
   std::size_t movable_vertices = 0;         ///< interior vertices free to move (first pass)
   std::size_t moves = 0;                    ///< accepted moves, over all passes
-  std::size_t rejected_moves = 0;           ///< moves refused by the guard (full and half step)
+  std::size_t rejected_moves = 0;           ///< candidate positions refused by the guard (before or after the flips)
   std::size_t flips = 0;                    ///< edge flips restoring the constrained Delaunay property
   std::vector<std::size_t> flips_per_pass;  ///< the same, pass by pass
 };

@@ -15,10 +15,6 @@
 #include <CGAL/Advancing_front_mesh_2/Smoothing_statistics.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Laplacian_smoother.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/property_map.h>
-
-#include <cstddef>
 
 namespace CGAL {
 
@@ -80,15 +76,7 @@ template <class CDT, class NamedParameters = parameters::Default_named_parameter
 Advancing_front_mesh_2::Smoothing_statistics
 laplacian_smooth_mesh_2(CDT& cdt, const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef typename CDT::Vertex_handle Vertex_handle;
-  const std::size_t passes = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(5));
-  auto held = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
-                               Constant_property_map<Vertex_handle, bool>(false));
-  Advancing_front_mesh_2::internal::Laplacian_smoother<CDT, decltype(held)> smoother(cdt, held);
-  for(std::size_t pass = 0; pass < passes; ++pass) smoother.pass();
-  return smoother.statistics();
+  return Advancing_front_mesh_2::internal::smooth_with<Advancing_front_mesh_2::internal::Laplacian_moves>(cdt, np);
 }
 
 } // namespace CGAL

@@ -45,10 +45,9 @@ struct Laplacian_moves
   {
     return after.worst_ratio >= before.worst_ratio && after.worst_sine2 >= before.worst_sine2;
   }
-};
 
-template <class CDT, class Held>
-using Laplacian_smoother = Star_smoother<CDT, Held, Laplacian_moves>;
+  bool improves(const Star_quality&, const Star_quality&) const { return true; }
+};
 
 } // namespace internal
 } // namespace Advancing_front_mesh_2

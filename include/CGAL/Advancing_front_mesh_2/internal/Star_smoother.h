@@ -16,7 +16,9 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Double_geometry.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
@@ -82,7 +84,8 @@ struct Star_quality
 // - `acceptable(after, before)`: may a star of quality `after` replace one
 //   of quality `before`? (the guard: it must never let the worst get worse);
 // - `best_first`: try the acceptable candidates from the best star (the
-//   largest sum of radius ratios) down, or in the order proposed.
+//   largest sum of radius ratios) down, among those that `improves(after,
+//   before)`; or, when false, in the order proposed.
 template <class CDT, class Held, class Moves>
 class Star_smoother
 {
@@ -106,6 +109,8 @@ public:
 private:
   void find_movable_vertices();
   bool try_move(Vertex_handle v);
+  bool try_in_order(Vertex_handle v, const Star_quality& before);
+  bool try_best_first(Vertex_handle v, const Star_quality& before);
   bool try_position(Vertex_handle v, const Point& candidate, const Star_quality& after, const Star_quality& before);
   Star_quality star_quality(const Point& p, bool& valid) const;
   std::size_t flip_about(Vertex_handle v);
@@ -185,25 +190,38 @@ bool Star_smoother<CDT, Held, Moves>::try_move(Vertex_handle v)
   moves_.candidates(CGAL::to_double(old.x()), CGAL::to_double(old.y()), ring_xy_, candidates_);
   bool valid = false;
   const Star_quality before = star_quality(old, valid);
-  if(!Moves::best_first) {
-    for(const XY& c : candidates_) {
-      const Point candidate = Point(FT(c[0]), FT(c[1]));
-      const Star_quality after = star_quality(candidate, valid);
-      if(valid && moves_.acceptable(after, before) && try_position(v, candidate, after, before)) return true;
-      ++stats_.rejected_moves;
-    }
-    return false;
+  if constexpr(Moves::best_first) return try_best_first(v, before);
+  else return try_in_order(v, before);
+}
+
+template <class CDT, class Held, class Moves>
+bool Star_smoother<CDT, Held, Moves>::try_in_order(Vertex_handle v, const Star_quality& before)
+{
+  bool valid = false;
+  for(const XY& c : candidates_) {
+    const Point candidate = Point(FT(c[0]), FT(c[1]));
+    const Star_quality after = star_quality(candidate, valid);
+    if(valid && moves_.acceptable(after, before) && try_position(v, candidate, after, before)) return true;
+    ++stats_.rejected_moves;
   }
+  return false;
+}
+
+template <class CDT, class Held, class Moves>
+bool Star_smoother<CDT, Held, Moves>::try_best_first(Vertex_handle v, const Star_quality& before)
+{
+  bool valid = false;
   acceptable_.clear();
   for(const XY& c : candidates_) {
     const Point candidate = Point(FT(c[0]), FT(c[1]));
     const Star_quality after = star_quality(candidate, valid);
-    if(valid && moves_.acceptable(after, before)) acceptable_.emplace_back(after, candidate);
-    else ++stats_.rejected_moves;
+    if(valid && moves_.acceptable(after, before) && moves_.improves(after, before))
+      acceptable_.emplace_back(after, candidate);
+    else
+      ++stats_.rejected_moves;
   }
-  std::stable_sort(acceptable_.begin(), acceptable_.end(), [](const auto& p, const auto& q) {
-    return p.first.ratio_sum > q.first.ratio_sum;
-  });
+  std::stable_sort(acceptable_.begin(), acceptable_.end(),
+                   [](const auto& p, const auto& q) { return p.first.ratio_sum > q.first.ratio_sum; });
   for(const auto& a : acceptable_) {
     if(try_position(v, a.second, a.first, before)) return true;
     ++stats_.rejected_moves;
@@ -309,6 +327,22 @@ Star_quality Star_smoother<CDT, Held, Moves>::worst_of_changed_faces(Vertex_hand
     face(fg.second);
   }
   return worst;
+}
+
+// The named parameters of the public smoothers (number_of_iterations,
+// vertex_is_constrained_map), unpacked, and the passes run.
+template <class Moves, class CDT, class NamedParameters>
+Smoothing_statistics smooth_with(CDT& cdt, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  const std::size_t passes = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(5));
+  auto held = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                               Constant_property_map<Vertex_handle, bool>(false));
+  Star_smoother<CDT, decltype(held), Moves> smoother(cdt, held);
+  for(std::size_t pass = 0; pass < passes; ++pass) smoother.pass();
+  return smoother.statistics();
 }
 
 } // namespace internal
