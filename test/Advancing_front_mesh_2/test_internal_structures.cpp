@@ -13,9 +13,14 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Double_geometry.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Finished_faces_check.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_predicates.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 
@@ -1432,4 +1437,146 @@ AFM_TEST_CASE(test_internal_front_predicates_on_doubles)
   }
   std::cout << "  " << degenerate << " exactly collinear triples of 20,000\n";
   AFM_CHECK(degenerate > 100);
+}
+
+// The check of the finished triangles in streaming mode
+// (Finished_faces_check.h) on two triangles made not Delaunay by hand: a
+// pair in the batch is flipped; a pair with a triangle that stays in memory
+// holds the finished one back; a triangle already written beyond an edge
+// (the ghost, with its apex) is counted, not repaired. A Delaunay pair
+// passes untouched.
+AFM_TEST_CASE(test_internal_finished_faces_check)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<K>, CGAL::Delaunay_mesh_face_base_2<K> >
+    Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds> CDT;
+  typedef CDT::Face_handle Face_handle;
+  typedef CDT::Vertex_handle Vertex_handle;
+  typedef CGAL::Advancing_front_mesh_2::internal::Front_predicates<K> Predicates;
+  namespace AI = CGAL::Advancing_front_mesh_2::internal;
+  const Predicates pred;
+  // a square split by the diagonal (0,0)-(1,1), then (1,0) pulled towards
+  // the middle: the diagonal is no longer Delaunay
+  auto make = [](CDT& cdt, std::vector<Face_handle>& faces, Vertex_handle& moved) {
+    cdt.insert(K::Point_2(0, 0));
+    moved = cdt.insert(K::Point_2(1, 0));
+    cdt.insert(K::Point_2(1, 1));
+    cdt.insert(K::Point_2(0, 1));
+    for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(!cdt.is_infinite(f));
+    for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) faces.push_back(f);
+    AFM_CHECK(faces.size() == 2);
+  };
+  auto delaunay = [&](const CDT& cdt) {
+    for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      const Face_handle f = e->first, g = f->neighbor(e->second);
+      if(cdt.is_infinite(f) || cdt.is_infinite(g)) continue;
+      if(pred.strictly_inside_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                                     g->vertex(g->index(f))->point()))
+        return false;
+    }
+    return true;
+  };
+  const auto no_apex = [](Vertex_handle, Vertex_handle) -> const K::Point_2* { return nullptr; };
+  std::size_t gained = 0, lost = 0;
+  const auto count = [&](Vertex_handle, Vertex_handle, Vertex_handle, Vertex_handle) { lost += 2; gained += 2; };
+  {
+    CDT cdt;
+    std::vector<Face_handle> faces;
+    Vertex_handle moved;
+    make(cdt, faces, moved);
+    const AI::Finished_faces_check untouched = AI::check_finished_faces(cdt, pred, faces, Face_handle(), no_apex, count);
+    AFM_CHECK(untouched.flips == 0 && untouched.held == 0 && untouched.unrepaired == 0 && faces.size() == 2);
+    // one of the corners off the diagonal, pulled towards the middle
+    Vertex_handle off;
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if(cdt.degree(v) == 3) off = v; // (degree counts the infinite vertex) an end of no diagonal
+    AFM_CHECK(off != Vertex_handle());
+    const K::Point_2 p = off->point();
+    off->set_point(K::Point_2(0.5 + 0.6 * (p.x() - 0.5), 0.5 + 0.6 * (p.y() - 0.5)));
+    AFM_CHECK(!delaunay(cdt));
+    const AI::Finished_faces_check flipped = AI::check_finished_faces(cdt, pred, faces, Face_handle(), no_apex, count);
+    AFM_CHECK(flipped.flips == 1 && flipped.held == 0 && flipped.unrepaired == 0 && faces.size() == 2);
+    AFM_CHECK(cdt.is_valid() && delaunay(cdt) && lost == 2 && gained == 2);
+  }
+  {
+    // one of the two stays in memory: the finished one is held back
+    CDT cdt;
+    std::vector<Face_handle> faces;
+    Vertex_handle moved;
+    make(cdt, faces, moved);
+    Vertex_handle off;
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if(cdt.degree(v) == 3) off = v;
+    const K::Point_2 p = off->point();
+    off->set_point(K::Point_2(0.5 + 0.6 * (p.x() - 0.5), 0.5 + 0.6 * (p.y() - 0.5)));
+    std::vector<Face_handle> one{faces[0]};
+    const AI::Finished_faces_check held = AI::check_finished_faces(cdt, pred, one, Face_handle(), no_apex, count);
+    AFM_CHECK(held.flips == 0 && held.held == 1 && held.unrepaired == 0 && one.empty());
+    // the other one already written: its apex stands beyond the ghost
+    Face_handle ghost = cdt.tds().create_face();
+    ghost->set_in_domain(false);
+    Face_handle f = faces[0], g = faces[1];
+    const int i = f->index(g);
+    const K::Point_2 apex = g->vertex(g->index(f))->point();
+    f->set_neighbor(i, ghost);
+    const Vertex_handle s = f->vertex(CDT::ccw(i)), t = f->vertex(CDT::cw(i));
+    const auto apex_beyond = [&](Vertex_handle a, Vertex_handle b) -> const K::Point_2* {
+      return (a == s && b == t) ? &apex : nullptr;
+    };
+    std::vector<Face_handle> written{f};
+    const AI::Finished_faces_check unrepaired = AI::check_finished_faces(cdt, pred, written, ghost, apex_beyond, count);
+    AFM_CHECK(unrepaired.flips == 0 && unrepaired.held == 0 && unrepaired.unrepaired == 1 && written.size() == 1);
+    f->set_neighbor(i, g); // the triangulation as it was, for its destructor
+    cdt.tds().delete_face(ghost);
+  }
+}
+
+// circle_of()'s error bound: the circle computed in doubles lies within the
+// bound of the true circumcircle (computed in rationals), for well-shaped,
+// thin and nearly flat triangles at scales from 1e-200 to 1e200 and far from
+// the origin; flat enough, the bound says nothing (infinity), and it is
+// small against the radius for reasonable triangles.
+AFM_TEST_CASE(test_internal_circle_error_bound)
+{
+  typedef CGAL::Exact_rational Q;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::size_t checked = 0, unbounded = 0;
+  double worst_share = 0;
+  for(int i = 0; i < 20000; ++i) {
+    const double scale = std::ldexp(1., int(unit(rng) * 600)), offset = i % 3 == 0 ? 1e6 * scale : 0;
+    const double flatness = std::pow(10., -18 * (0.5 + 0.5 * unit(rng)));
+    const double ax = offset + scale * unit(rng), ay = offset + scale * unit(rng);
+    const double bx = offset + scale * unit(rng), by = offset + scale * unit(rng);
+    // c near the line ab when flat
+    const double t = unit(rng);
+    const double cx = ax + t * (bx - ax) - flatness * (by - ay);
+    const double cy = ay + t * (by - ay) + flatness * (bx - ax);
+    double error = 0;
+    const CGAL::Advancing_front_mesh_2::internal::Circle c =
+      CGAL::Advancing_front_mesh_2::internal::circle_of(ax, ay, bx, by, cx, cy, &error);
+    const Q d = 2 * (Q(ax) * (Q(by) - Q(cy)) + Q(bx) * (Q(cy) - Q(ay)) + Q(cx) * (Q(ay) - Q(by)));
+    if(d == 0) continue;
+    if(!std::isfinite(error)) {
+      ++unbounded;
+      continue;
+    }
+    const Q a2 = Q(ax) * Q(ax) + Q(ay) * Q(ay), b2 = Q(bx) * Q(bx) + Q(by) * Q(by), c2 = Q(cx) * Q(cx) + Q(cy) * Q(cy);
+    const Q ux = (a2 * (Q(by) - Q(cy)) + b2 * (Q(cy) - Q(ay)) + c2 * (Q(ay) - Q(by))) / d;
+    const Q uy = (a2 * (Q(cx) - Q(bx)) + b2 * (Q(ax) - Q(cx)) + c2 * (Q(bx) - Q(ax))) / d;
+    const Q dx = ux - Q(c.cx), dy = uy - Q(c.cy);
+    // |centre - true centre| <= error, without square roots: each axis
+    AFM_CHECK_MSG(CGAL::abs(dx) <= Q(error) && CGAL::abs(dy) <= Q(error), "centre off by more than " << error);
+    // |r - true r| <= error: (r - e)^2 <= r*^2 <= (r + e)^2
+    const Q r2 = (ux - Q(ax)) * (ux - Q(ax)) + (uy - Q(ay)) * (uy - Q(ay));
+    const Q lo = c.r > error ? (Q(c.r) - Q(error)) * (Q(c.r) - Q(error)) : Q(0);
+    AFM_CHECK_MSG(lo <= r2 && r2 <= (Q(c.r) + Q(error)) * (Q(c.r) + Q(error)), "radius off by more than " << error);
+    ++checked;
+    if(flatness > 1e-3) worst_share = (std::max)(worst_share, error / c.r);
+  }
+  std::cout << "  " << checked << " circles within their bound, " << unbounded
+            << " too flat to bound; largest bound over radius for reasonable triangles " << worst_share << "\n";
+  AFM_CHECK(checked > 15000 && unbounded > 0);
+  AFM_CHECK(worst_share < 1e-7); // 1.0e-8 measured (a thin triangle 1e6 of its sizes from the origin)
 }

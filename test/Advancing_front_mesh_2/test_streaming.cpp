@@ -170,6 +170,12 @@ void check_streaming(const afm_test::Poly_data& in, const Sizing& sizing, const 
                 label << ": " << st.points_refused_for_finished_triangles
                       << " points refused because their cavity reached finished triangles ("
                       << st.finished_triangles_broken << " would have broken one)");
+  // the check of the finished triangles (no final Lawson pass here) found
+  // nothing to repair
+  AFM_CHECK_MSG(st.delaunay_repair_flips == 0 && st.finished_triangles_held == 0 &&
+                  st.finished_edges_not_delaunay == 0,
+                label << ": finished triangles not Delaunay: " << st.delaunay_repair_flips << " flipped, "
+                      << st.finished_triangles_held << " held, " << st.finished_edges_not_delaunay << " unrepaired");
   AFM_CHECK_MSG(canonical(sink) == in_core, label << ": the streamed triangles differ from the in-core mesh ("
                                                   << sink.triangles.size() << " vs " << in_core.size() << ")");
   AFM_CHECK_MSG(finished == sink.triangles.size() && st.number_of_faces == sink.triangles.size() &&

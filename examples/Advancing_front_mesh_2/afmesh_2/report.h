@@ -108,6 +108,9 @@ inline Json streamed_statistics_json(const Options& opt, AFM::Mesh_return_code r
                          {"stream_sweeps", st.stream_sweeps},
                          {"points_refused_for_finished_triangles", st.points_refused_for_finished_triangles},
                          {"finished_triangles_broken", st.finished_triangles_broken},
+                         {"finished_triangles_held", st.finished_triangles_held},
+                         {"finished_edges_not_delaunay", st.finished_edges_not_delaunay},
+                         {"delaunay_repair_flips", st.delaunay_repair_flips},
                          {"checkpoints_written", st.checkpoints_written}};
   return j;
 }

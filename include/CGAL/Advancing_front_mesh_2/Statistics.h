@@ -114,7 +114,9 @@ struct Statistics
   /// largest number of live triangles: front triangles, whose circumcircles
   /// reach past the front and are held by the circle octree
   std::size_t largest_live_triangles = 0;
-  /// edges flipped by the final Lawson check; 0 unless the advancing front
+  /// edges flipped by the final Lawson check (in streaming mode, by the
+  /// check of the finished triangles before they go to the sink, which
+  /// tests every edge of theirs exactly); 0 unless the advancing front
   /// missed a broken circle, which the tests assert never happens
   std::size_t delaunay_repair_flips = 0;
   /// Streaming mode (`Advancing_front_mesher_2::set_output_sink()`) only:
@@ -134,6 +136,15 @@ struct Statistics
   /// of those, the points inside the circle of the finished triangle (the
   /// run without streaming would have broken it)
   std::size_t finished_triangles_broken = 0;
+  /// Streaming mode: finished triangles kept in memory for another sweep
+  /// because an edge to a triangle still in memory was not Delaunay (when
+  /// both have finished, the edge is flipped); 0 in every test
+  std::size_t finished_triangles_held = 0;
+  /// Streaming mode: edges of finished triangles that were not Delaunay
+  /// against a triangle already written to the sink, which cannot be
+  /// repaired (the output is then not constrained Delaunay there); 0 in
+  /// every test
+  std::size_t finished_edges_not_delaunay = 0;
   /// checkpoints written (see `Advancing_front_mesher_2::set_checkpoint()`)
   std::size_t checkpoints_written = 0;
   /// number of vertices and in-domain faces of the result

@@ -85,7 +85,7 @@ public:
   Checkpoint_info read(const std::string& content, const std::string& file_name);
 
 private:
-  static constexpr std::uint32_t version = 3; // 2: the coordinate origin; 3: constraint hubs
+  static constexpr std::uint32_t version = 4; // 2: the coordinate origin; 3: constraint hubs; 4: the check of finished triangles' counters
   static constexpr std::uint32_t null_face = 0xffffffffu, ghost_face = 0xfffffffeu, no_index = 0xffffffffu;
   static std::string magic() { return "Advancing_front_mesh_2 checkpoint"; }
   static std::string traits_name() { return typeid(typename Context::Geom_traits).name(); }

@@ -39,21 +39,49 @@ struct Circle
 };
 
 // The circumcircle of the triangle (a, b, c); an infinite radius when the
-// points coincide or a coordinate is not finite.
-inline Circle circle_of(double ax, double ay, double bx, double by, double cx, double cy)
+// points coincide or a coordinate is not finite. With `error`, also a bound
+// on how far the computed centre and radius may each lie from the true
+// circumcircle's, when the coordinates are exact (infinite when the
+// triangle is too flat for the double computation to bound anything).
+inline Circle circle_of(double ax, double ay, double bx, double by, double cx, double cy, double* error = nullptr)
 {
   // circumcircle relative to a, which keeps the rounding error small for
   // coordinates far from the origin
   // and in a frame scaled to unit size, so that the cubic terms neither
   // overflow nor underflow for very large or very small coordinates
   const double scale = (std::max)({std::abs(bx - ax), std::abs(by - ay), std::abs(cx - ax), std::abs(cy - ay)});
-  if(!(scale > 0) || !std::isfinite(scale))
+  if(!(scale > 0) || !std::isfinite(scale)) {
+    if(error) *error = std::numeric_limits<double>::infinity();
     return Circle{ax, ay, std::numeric_limits<double>::infinity()};
+  }
   const double bax = (bx - ax) / scale, bay = (by - ay) / scale, cax = (cx - ax) / scale, cay = (cy - ay) / scale;
   const double d = 2 * (bax * cay - bay * cax);
   const double b2 = bax * bax + bay * bay, c2 = cax * cax + cay * cay;
   const double ux = (cay * b2 - bay * c2) / d, uy = (bax * c2 - cax * b2) / d;
-  return Circle{ax + ux * scale, ay + uy * scale, length(ux, uy) * scale};
+  const Circle c{ax + ux * scale, ay + uy * scale, length(ux, uy) * scale};
+  if(error) {
+    // Forward error analysis in units of u = 2^-53: the frame's
+    // coordinates carry 2u (a subtraction, a division), the squares b2, c2
+    // 7u, d's two products 5u each and their difference u more, so
+    // |d - d*| <= 12u P with P = |bax cay| + |bay cax|; the numerators'
+    // products 10u and their difference u, so |N - N*| <= 11u Q. While
+    // |d| >= 24u P, |d*| >= |d| / 2 and the offset (ux, uy) is off by at
+    // most 2 (11u Q + 12u P |ux|) / |d| + u |ux| per axis; scaling back and
+    // adding a round each coordinate once more, the square root and the
+    // product the radius three times. Doubled for the second-order terms.
+    const double u = std::ldexp(1., -53);
+    const double P = std::abs(bax * cay) + std::abs(bay * cax);
+    const double Qx = std::abs(cay) * b2 + std::abs(bay) * c2, Qy = std::abs(bax) * c2 + std::abs(cax) * b2;
+    if(!(std::abs(d) >= 24 * u * P) || !std::isfinite(c.r)) {
+      *error = std::numeric_limits<double>::infinity();
+    } else {
+      const double ex = 2 * (11 * u * Qx + 12 * u * P * std::abs(ux)) / std::abs(d) + u * std::abs(ux);
+      const double ey = 2 * (11 * u * Qy + 12 * u * P * std::abs(uy)) / std::abs(d) + u * std::abs(uy);
+      *error = 2 * ((ex + ey + u * (std::abs(ux) + std::abs(uy))) * scale + u * (std::abs(c.cx) + std::abs(c.cy)) +
+                    3 * u * c.r);
+    }
+  }
+  return c;
 }
 
 // The distance from p to the segment [a, b].

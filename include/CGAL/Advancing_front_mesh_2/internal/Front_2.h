@@ -437,10 +437,18 @@ void Front_2<C, P, F>::count_edge_behind(Face_handle f, Vid a, Vid b, Vid c)
     return;
   }
   Phase_scope phase(ctx_.timer, CIRCLE_OCTREE);
-  const Circle circle = (a != no_vertex && b != no_vertex && c != no_vertex)
-                          ? circle_of(x(a), y(a), x(b), y(b), x(c), y(c))
-                          : ctx_.circle_of(f);
-  face_records.insert(&*f, Face_record{front_triangle_circles.insert(circle.cx, circle.cy, circle.r, f), 1});
+  // the circle is stored grown by its rounding error bound, so that the
+  // index's answers hold every circle a point truly breaks (the in-circle
+  // predicate then decides)
+  double error = 0;
+  Circle circle;
+  if(a != no_vertex && b != no_vertex && c != no_vertex) {
+    circle = circle_of(x(a), y(a), x(b), y(b), x(c), y(c), &error);
+    error = ctx_.circle_error(circle, error);
+  } else {
+    circle = ctx_.circle_of(f, &error);
+  }
+  face_records.insert(&*f, Face_record{front_triangle_circles.insert(circle.cx, circle.cy, circle.r + error, f), 1});
   ctx_.stats.largest_live_triangles = (std::max)(ctx_.stats.largest_live_triangles, face_records.size());
 }
 

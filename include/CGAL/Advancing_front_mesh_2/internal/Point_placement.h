@@ -193,9 +193,13 @@ bool Point_placement<Front, V, T, S>::close_or_clamp(Vid a, Vid b, Vid w, const 
 {
   d = e.d_target;
   if(w == no_vertex) return false;
-  const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w));
+  double error = 0;
+  const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w), &error);
+  error = ctx_.circle_error(c, error);
   const double centre_offset = length(c.cx - e.mx, c.cy - e.my);
-  const bool complete = centre_offset + c.r <= e.radius;
+  // the circle surely lies in the searched disk (written so that an error
+  // bound that is not finite says no)
+  const bool complete = centre_offset + c.r + 2 * error <= e.radius;
   if(complete && c.r <= e.accept) { // step 6: close
     close_on_existing_point(a, b, w);
     return true;
@@ -259,10 +263,13 @@ void Point_placement<Front, V, T, S>::forced_closure(Vid a, Vid b)
     neighbourhood_.gather(mx + h * nx, my + h * ny, r);
     const Vid w = apex_(a, b, neighbourhood_);
     if(w != no_vertex) {
-      const Circle c = circle_of(ax, ay, bx, by, front_.x(w), front_.y(w));
+      double error = 0;
+      const Circle c = circle_of(ax, ay, bx, by, front_.x(w), front_.y(w), &error);
+      error = ctx_.circle_error(c, error);
       const double height = (c.cx - mx) * nx + (c.cy - my) * ny;
       if(!std::isfinite(height)) break;
-      if(height <= h) {
+      // surely at most h (the gathered circle's padding covers the rest)
+      if(height + error <= h) {
         close_on_existing_point(a, b, w);
         return;
       }
@@ -287,8 +294,10 @@ void Point_placement<Front, V, T, S>::forced_closure_in_growing_disks(Vid a, Vid
     const bool everything = neighbourhood_.vertices.size() >= front_.active_points.size() || !std::isfinite(r);
     const Vid w = apex_(a, b, neighbourhood_);
     if(w != no_vertex) {
-      const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w));
-      const double needed = length(c.cx - mx, c.cy - my) + c.r;
+      double error = 0;
+      const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w), &error);
+      error = ctx_.circle_error(c, error);
+      const double needed = length(c.cx - mx, c.cy - my) + c.r + 2 * error;
       if(needed <= r || everything) {
         close_on_existing_point(a, b, w);
         return;

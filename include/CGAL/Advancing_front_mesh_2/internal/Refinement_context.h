@@ -18,6 +18,7 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Front_predicates.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Phase_timer.h>
 
+#include <cmath>
 #include <type_traits>
 
 namespace CGAL {
@@ -65,12 +66,26 @@ struct Refinement_context
   double iy(const Point& p) const { return scaling.iy(p); }
 
   // the circumcircle of a face in internal coordinates, read through the
-  // face (its vertices need not be active)
-  Circle circle_of(Face_handle f) const
+  // face (its vertices need not be active); with `error`, a bound on how far
+  // its centre and radius may lie from the true ones (circle_error())
+  Circle circle_of(Face_handle f, double* error = nullptr) const
   {
     auto X = [this, &f](int i) { return ix(f->vertex(i)->point()); };
     auto Y = [this, &f](int i) { return iy(f->vertex(i)->point()); };
-    return internal::circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2));
+    const Circle c = internal::circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2), error);
+    if(error) *error = circle_error(c, *error);
+    return c;
+  }
+
+  // How far a circle computed from internal coordinates (centre and radius
+  // each) may lie from the true circle of the points, `rounding` being
+  // circle_of()'s bound for exact coordinates: with approximate ones
+  // (to_double of a number that is not a double, which CGAL promises to a
+  // relative 1e-5), that much of the coordinates' magnitude more, as the
+  // searches' paddings assume.
+  double circle_error(const Circle& c, double rounding) const
+  {
+    return exact_coordinates() ? rounding : rounding + 1e-5 * (std::abs(c.cx) + std::abs(c.cy) + c.r);
   }
 
   double triangle_area(Face_handle f) const

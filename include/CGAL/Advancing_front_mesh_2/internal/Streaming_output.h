@@ -12,6 +12,7 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/internal/Finished_faces_check.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Size_bound.h>
@@ -73,6 +74,7 @@ private:
   void hand_to_sink(const std::vector<Face_handle>& faces);
   void unlink(const std::vector<Face_handle>& faces);
   void drop(std::vector<Face_handle>& faces);
+  void check_delaunay(std::vector<Face_handle>& faces);
 
   Context& ctx_;
   const Front& front_;
@@ -230,6 +232,29 @@ void Streaming_output<Front, S, V>::drop(std::vector<Face_handle>& faces)
   stream_.output_id.shrink_if_sparse();
 }
 
+// There is no final Lawson pass in streaming mode: the finished faces are
+// checked as they leave (Finished_faces_check.h), flipped among themselves,
+// kept back when an edge to a face in memory is not Delaunay.
+template <class Front, class S, class V>
+void Streaming_output<Front, S, V>::check_delaunay(std::vector<Face_handle>& faces)
+{
+  const auto apex_beyond = [this](Vertex_handle s, Vertex_handle t) -> const Point* {
+    const auto it = stream_.ghost_apex.find(std::make_pair(&*s, &*t));
+    return it == stream_.ghost_apex.end() ? nullptr : &it->second;
+  };
+  const auto on_flip = [this](Vertex_handle a, Vertex_handle b, Vertex_handle c, Vertex_handle d) {
+    for(Vertex_handle v : {a, b})
+      if(std::uint32_t* n = stream_.live_faces.find(&*v)) --*n;
+    for(Vertex_handle v : {c, d})
+      if(std::uint32_t* n = stream_.live_faces.find(&*v)) ++*n;
+  };
+  const Finished_faces_check found =
+    check_finished_faces(ctx_.tr, ctx_.pred, faces, stream_.ghost, apex_beyond, on_flip);
+  ctx_.stats.delaunay_repair_flips += found.flips;
+  ctx_.stats.finished_triangles_held += found.held;
+  ctx_.stats.finished_edges_not_delaunay += found.unrepaired;
+}
+
 // Searches the triangles in memory for finished ones (all of them, with
 // `everything`) and drops them.
 template <class Front, class S, class V>
@@ -262,6 +287,7 @@ void Streaming_output<Front, S, V>::sweep(bool everything)
   }
   near_front_.clear();
   near_front_.shrink_if_sparse();
+  check_delaunay(finished);
   drop(finished);
   stream_.created_since_sweep = 0;
   // after as many new triangles as stayed in memory, so that each is tested
