@@ -313,7 +313,7 @@ void fig12(const Options& o)
   AFM::Poisson_sizing_field_options opt;
   opt.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES; // the paper's field
   compare("four-element airfoil, Fig. 12 field", four, as_function(std::make_shared<Field>(spacing, s, opt)), 0, o,
-          Figure{"", "four_element_quality_smoothed_closeup", -0.2, -0.4, 0.6, 0.1});
+          Figure());
 }
 
 // afmesh_2's field without sources: the boundary spacing grown from the
