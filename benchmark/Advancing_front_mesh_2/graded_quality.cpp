@@ -22,8 +22,9 @@
 // vertex relocation): its rows are given without ("raw") and with it
 // ("default"), so that each of ours compares with the like.
 //
-//   graded_quality --data ../shared/data [--smooth N] [--cases a,b,...] [--figures DIR]
-// (cases: square, holes, fig12, 30p30n, nlr, airfoil, lake)
+//   graded_quality --data ../shared/data [--smooth N] [--cases a,b,...] [--figures DIR] [--ours-only]
+// (cases: square, holes, fig12, 30p30n, nlr, airfoil, lake; --ours-only
+// skips Gmsh and Mesh_2, for quick iterations on the mesher)
 #include "bench_common.h"
 #ifdef AFM_WITH_GMSH
 #include "gmsh_runner.h"
@@ -76,6 +77,7 @@ struct Options
   int smooth = 5;
   std::string cases; // empty: all
   std::string figures;
+  bool ours_only = false;
 };
 
 // A close-up picture of our mesh, raw and smoothed, coloured by quality.
@@ -289,6 +291,7 @@ void compare(const std::string& name, const Poly_data& in, const Size_function& 
 {
   std::cerr << "== " << name << "\n";
   const std::size_t n = run_ours(name, in, size, o, fig);
+  if(o.ours_only) return;
 #ifdef AFM_WITH_GMSH
   gmsh_matched(name, in, size, n);
   if(h_max > 0) gmsh_own_extension(name, in, h_max);
@@ -344,9 +347,10 @@ int main(int argc, char* argv[])
     else if(a == "--smooth" && i + 1 < argc) o.smooth = std::atoi(argv[++i]);
     else if(a == "--cases" && i + 1 < argc) o.cases = argv[++i];
     else if(a == "--figures" && i + 1 < argc) o.figures = argv[++i];
+    else if(a == "--ours-only") o.ours_only = true;
     else {
       std::cerr << "usage: graded_quality --data DIR [--smooth N] [--cases square,holes,fig12,30p30n,nlr,airfoil,lake]"
-                   " [--figures DIR]\n";
+                   " [--figures DIR] [--ours-only]\n";
       return 2;
     }
   }
