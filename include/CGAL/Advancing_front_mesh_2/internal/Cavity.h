@@ -343,12 +343,12 @@ template <class Front, class V, class T, class P, class Vis>
 bool Cavity<Front, V, T, P, Vis>::may_join_star(Vid u, Vid v, Vid w, Vid a, Vid b, double px, double py,
                                                  double accept, double accept_raised, double star_radius) const
 {
-  double error = 0;
-  const Circle c = circle_of(front_.x(u), front_.y(u), front_.x(v), front_.y(v), front_.x(w), front_.y(w), &error);
+  double error;
+  const Circle c = front_.circle_of(u, v, w, error);
   // the circle surely lies in the star's disk; written so that a circle
   // that could not be computed (NaN), or whose error has no bound, is
   // rejected
-  if(!(length(c.cx - px, c.cy - py) + c.r + 2 * ctx_.circle_error(c, error) <= star_radius)) return false;
+  if(!(length(c.cx - px, c.cy - py) + c.r + 2 * error <= star_radius)) return false;
   if(!(c.r <= accept) && !(u == a && v == b) &&
      (!(c.r <= accept_raised) ||
       !(radius_ratio(front_.x(u), front_.y(u), front_.x(v), front_.y(v), front_.x(w), front_.y(w)) >=

@@ -128,6 +128,16 @@ public:
   const Front_edge* find(Edge_key k) const { return edges.find(k); }
   Front_edge* find(Edge_key k) { return edges.find(k); }
   double edge_length(Vid u, Vid v) const { return length(x(v) - x(u), y(v) - y(u)); }
+  // the circle through three active vertices, and in `error` a bound on how
+  // far its centre and radius may lie from the true circle's (rounding,
+  // and the coordinates' own error when they are not exact)
+  Circle circle_of(Vid a, Vid b, Vid c, double& error) const
+  {
+    error = 0;
+    const Circle circle = internal::circle_of(x(a), y(a), x(b), y(b), x(c), y(c), &error);
+    error = ctx_.circle_error(circle, error);
+    return circle;
+  }
   bool is_front_segment(Vid u, Vid v) const;
   bool is_hub(Vid v) const { return hubs.contains(v); }
 
@@ -443,8 +453,7 @@ void Front_2<C, P, F>::count_edge_behind(Face_handle f, Vid a, Vid b, Vid c)
   double error = 0;
   Circle circle;
   if(a != no_vertex && b != no_vertex && c != no_vertex) {
-    circle = circle_of(x(a), y(a), x(b), y(b), x(c), y(c), &error);
-    error = ctx_.circle_error(circle, error);
+    circle = circle_of(a, b, c, error);
   } else {
     circle = ctx_.circle_of(f, &error);
   }

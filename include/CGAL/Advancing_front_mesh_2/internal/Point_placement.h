@@ -193,9 +193,8 @@ bool Point_placement<Front, V, T, S>::close_or_clamp(Vid a, Vid b, Vid w, const 
 {
   d = e.d_target;
   if(w == no_vertex) return false;
-  double error = 0;
-  const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w), &error);
-  error = ctx_.circle_error(c, error);
+  double error;
+  const Circle c = front_.circle_of(a, b, w, error);
   const double centre_offset = length(c.cx - e.mx, c.cy - e.my);
   // the circle surely lies in the searched disk (written so that an error
   // bound that is not finite says no)
@@ -263,9 +262,8 @@ void Point_placement<Front, V, T, S>::forced_closure(Vid a, Vid b)
     neighbourhood_.gather(mx + h * nx, my + h * ny, r);
     const Vid w = apex_(a, b, neighbourhood_);
     if(w != no_vertex) {
-      double error = 0;
-      const Circle c = circle_of(ax, ay, bx, by, front_.x(w), front_.y(w), &error);
-      error = ctx_.circle_error(c, error);
+      double error;
+      const Circle c = front_.circle_of(a, b, w, error);
       const double height = (c.cx - mx) * nx + (c.cy - my) * ny;
       if(!std::isfinite(height)) break;
       // surely at most h (the gathered circle's padding covers the rest)
@@ -294,9 +292,8 @@ void Point_placement<Front, V, T, S>::forced_closure_in_growing_disks(Vid a, Vid
     const bool everything = neighbourhood_.vertices.size() >= front_.active_points.size() || !std::isfinite(r);
     const Vid w = apex_(a, b, neighbourhood_);
     if(w != no_vertex) {
-      double error = 0;
-      const Circle c = circle_of(front_.x(a), front_.y(a), front_.x(b), front_.y(b), front_.x(w), front_.y(w), &error);
-      error = ctx_.circle_error(c, error);
+      double error;
+      const Circle c = front_.circle_of(a, b, w, error);
       const double needed = length(c.cx - mx, c.cy - my) + c.r + 2 * error;
       if(needed <= r || everything) {
         close_on_existing_point(a, b, w);
