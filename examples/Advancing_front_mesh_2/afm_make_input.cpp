@@ -5,7 +5,8 @@
 //
 //   afm_make_input [GEOMETRY] [OUT.poly] [SPACING]
 //   GEOMETRY: multi-element-airfoil (default), square-with-hole, l-shape,
-//             two-thin-plates, naca0012, many-holes, nearly-collinear
+//             two-thin-plates, naca0012, many-holes, nearly-collinear,
+//             tagged-regions (three regions, markers, area limits)
 //   SPACING: boundary spacing of square-with-hole (default 0.01), so that
 //            a uniform mesh of size SPACING fits its boundary
 //
@@ -72,6 +73,7 @@ int main(int argc, char* argv[])
   else if(name == "naca0012") pd = afm_geometry::naca0012_far_field(100, 20, 64);
   else if(name == "many-holes") pd = afm_geometry::many_holes(40, 1);
   else if(name == "nearly-collinear") pd = afm_geometry::nearly_collinear_boundary(1e-9);
+  else if(name == "tagged-regions") pd = afm_geometry::tagged_regions();
   else {
     std::cerr << "afm_make_input: unknown geometry '" << name << "'\n";
     return EXIT_FAILURE;

@@ -8,9 +8,13 @@
 
 #include "afm_test_harness.h"
 
+#include "afm_geometries.h"
+
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
@@ -30,6 +34,7 @@
 #include <iterator>
 #include <limits>
 #include <locale>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -47,6 +52,7 @@ typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds> CDT;
 typedef CGAL::Delaunay_mesh_size_criteria_2<CDT> Criteria;
 typedef CGAL::Delaunay_mesher_2<CDT, Criteria> Mesher;
 
+namespace AFM = CGAL::Advancing_front_mesh_2;
 namespace afm_io = CGAL::Advancing_front_mesh_2::IO;
 
 // Files are created in the working directory (the build tree under ctest),
@@ -116,6 +122,10 @@ AFM_TEST_CASE(test_io_read_one_based_with_comments_attributes_markers)
   AFM_CHECK(d.segments[7][0] == 7 && d.segments[7][1] == 4);
   AFM_CHECK(d.holes.size() == 1);
   AFM_CHECK(d.holes[0][0] == 2 && d.holes[0][1] == 2);
+  // the markers are kept, one per item, in file order
+  AFM_CHECK(d.point_markers.size() == 8 && d.point_markers[0] == 1 && d.point_markers[7] == 2);
+  AFM_CHECK(d.segment_markers.size() == 8 && d.segment_markers[3] == 1 && d.segment_markers[4] == 2);
+  AFM_CHECK(d.regions.empty());
 }
 
 AFM_TEST_CASE(test_io_read_zero_based)
@@ -132,19 +142,27 @@ AFM_TEST_CASE(test_io_read_zero_based)
   AFM_CHECK(d.holes.empty());
 }
 
-AFM_TEST_CASE(test_io_read_regions_are_ignored)
+AFM_TEST_CASE(test_io_read_regions)
 {
   const std::string poly =
     "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"
     "3 0\n1 1 2\n2 2 3\n3 3 1\n"
     "0\n"
-    "2\n"
+    "3\n"
     "1 0.2 0.2 7 0.01\n"
-    "2 0.1 0.1 8   # no area constraint\n";
+    "2 0.1 0.1 8   # no area: as in Triangle, the attribute is the area too\n"
+    "3 0.3 0.1 -2.5 -1\n";
   const afm_io::Poly_data d = parse(poly);
   AFM_CHECK(d.points.size() == 3);
   AFM_CHECK(d.segments.size() == 3);
   AFM_CHECK(d.holes.empty());
+  AFM_CHECK(d.point_markers.empty() && d.segment_markers.empty());
+  AFM_CHECK(d.regions.size() == 3);
+  AFM_CHECK(d.regions[0].seed[0] == 0.2 && d.regions[0].seed[1] == 0.2);
+  AFM_CHECK(d.regions[0].attribute == 7 && d.regions[0].max_area == 0.01);
+  AFM_CHECK(d.regions[1].attribute == 8 && d.regions[1].max_area == 8);
+  AFM_CHECK(d.regions[2].attribute == -2.5 && d.regions[2].max_area == -1);
+  AFM_CHECK(d.origin.region_lines.size() == 3 && d.origin.region_lines[2] == 13);
 
   // An empty regions section is just as valid.
   const afm_io::Poly_data e = parse("1 2 0 0\n1 0 0\n0 0\n0\n0\n");
@@ -571,6 +589,177 @@ AFM_TEST_CASE(test_io_write_gmsh_msh)
   AFM_CHECK(lines[38] == "$EndElements");
 }
 
+// Markers and regions through every writer, on the tagged input inserted
+// (its in-domain faces stand for a mesh): what each file holds is parsed
+// back and compared with the geometry, not with the tags object.
+AFM_TEST_CASE(test_io_write_markers_and_regions)
+{
+  typedef AFM::Markers_and_regions_2<CDT> Tags;
+  const afm_io::Poly_data in = afm_geometry::tagged_regions(0.05);
+  CDT cdt;
+  const auto inserted = afm_io::insert_poly(cdt, in);
+  Tags tags = afm_io::markers_and_regions(in, inserted);
+  AFM_CHECK(tags.has_markers() && tags.has_regions() && tags.has_area_limits());
+  bool thrown = false;
+  try {
+    tags.region(cdt.finite_faces_begin());
+  } catch(const std::logic_error&) {
+    thrown = true;
+  }
+  AFM_CHECK_MSG(thrown, "region() before mark_regions() did not throw");
+  tags.mark_regions(cdt);
+
+  std::ostringstream node_os, ele_os, edge_os;
+  afm_io::write_triangle_node_ele(node_os, ele_os, edge_os, cdt, tags);
+  std::istringstream node(node_os.str()), ele(ele_os.str()), edge(edge_os.str());
+  std::size_t nv = 0, dim = 0, na = 0, nm = 0;
+  node >> nv >> dim >> na >> nm;
+  AFM_CHECK(nv == in.points.size() && dim == 2 && na == 0 && nm == 1);
+  std::vector<std::array<double, 2> > pts(nv);
+  std::vector<int> pmark(nv);
+  for(std::size_t i = 0; i < nv; ++i) {
+    std::size_t id = 0;
+    node >> id >> pts[i][0] >> pts[i][1] >> pmark[i];
+    AFM_CHECK(id == i + 1);
+  }
+  std::size_t ns = 0, em = 0;
+  edge >> ns >> em;
+  AFM_CHECK(ns == in.segments.size() && em == 1);
+  auto on_circle = [](const std::array<double, 2>& p) { return std::abs(std::hypot(p[0] - 1.5, p[1] - 0.5) - 0.2) < 1e-9; };
+  std::vector<int> smallest_marker(nv, 0);
+  for(std::size_t i = 0; i < ns; ++i) {
+    std::size_t id = 0, a = 0, b = 0;
+    int k = 0;
+    edge >> id >> a >> b >> k;
+    const auto& p = pts[a - 1];
+    const auto& q = pts[b - 1];
+    const int expected = (p[1] == 0 && q[1] == 0)   ? 1
+                         : (p[0] == 2 && q[0] == 2) ? 2
+                         : (p[1] == 1 && q[1] == 1) ? 3
+                         : (p[0] == 0 && q[0] == 0) ? 4
+                         : (p[0] == 1 && q[0] == 1) ? 5
+                         : on_circle(p) && on_circle(q) ? 6 : 7;
+    AFM_CHECK_MSG(k == expected, "segment " << id << ": marker " << k << ", expected " << expected);
+    for(std::size_t v : {a - 1, b - 1})
+      if(smallest_marker[v] == 0 || k < smallest_marker[v]) smallest_marker[v] = k;
+  }
+  // vertices: the corners' own marker 9, else that of the first segment (in
+  // file order, here the smallest marker) at them
+  for(std::size_t i = 0; i < nv; ++i) {
+    const bool corner = (pts[i][0] == 0 || pts[i][0] == 2) && (pts[i][1] == 0 || pts[i][1] == 1);
+    AFM_CHECK_MSG(pmark[i] == (corner ? 9 : smallest_marker[i]), "vertex " << i + 1 << ": marker " << pmark[i]);
+  }
+  std::size_t nt = 0, per = 0, ea = 0;
+  ele >> nt >> per >> ea;
+  AFM_CHECK(per == 3 && ea == 1 && nt > 100);
+  std::map<double, std::size_t> per_attribute;
+  for(std::size_t t = 0; t < nt; ++t) {
+    std::size_t id = 0, a = 0, b = 0, c = 0;
+    double attribute = 0;
+    ele >> id >> a >> b >> c >> attribute;
+    // the inclusion is convex: its triangles have their corners on its circle
+    const double cx = (pts[a - 1][0] + pts[b - 1][0] + pts[c - 1][0]) / 3;
+    const double expected = cx < 1 ? 1 : (on_circle(pts[a - 1]) && on_circle(pts[b - 1]) && on_circle(pts[c - 1]) ? 3 : 2);
+    AFM_CHECK_MSG(attribute == expected, "triangle " << id << ": attribute " << attribute << ", expected " << expected);
+    ++per_attribute[attribute];
+  }
+  AFM_CHECK(per_attribute.size() == 3 && ele.good() && node.good() && edge.good());
+
+  // Gmsh: a physical group per marker and per region, lines then triangles
+  std::ostringstream msh;
+  afm_io::write_gmsh_msh(msh, cdt, tags);
+  const std::string m = msh.str();
+  AFM_CHECK(m.find("$PhysicalNames\n10\n1 1 \"marker_1\"\n") != std::string::npos);
+  AFM_CHECK(m.find("1 7 \"marker_7\"\n2 1 \"region_1\"\n2 2 \"region_2\"\n2 3 \"region_3\"\n") != std::string::npos);
+  AFM_CHECK(m.find("$Entities\n0 7 3 0\n") != std::string::npos);
+  const std::string elements = "$Elements\n10 " + std::to_string(ns + nt) + " 1 " + std::to_string(ns + nt) + "\n";
+  AFM_CHECK_MSG(m.find(elements) != std::string::npos, elements);
+  AFM_CHECK(m.find("2 3 2 " + std::to_string(per_attribute[3]) + "\n") != std::string::npos);
+
+  // VTU: the segments as lines after the triangles, the tags as data
+  std::ostringstream vtu;
+  afm_io::write_mesh_VTU(vtu, cdt, tags);
+  const std::string v = vtu.str();
+  AFM_CHECK(v.find("NumberOfPoints=\"" + std::to_string(nv) + "\" NumberOfCells=\"" + std::to_string(nt + ns) + "\"") !=
+            std::string::npos);
+  AFM_CHECK(v.find("<PointData Scalars=\"marker\">") != std::string::npos);
+  AFM_CHECK(v.find("<DataArray type=\"Float64\" Name=\"region\"") != std::string::npos);
+
+  // the boundary .poly reads back with the same markers and regions, and
+  // bounds the same domain
+  std::ostringstream poly;
+  afm_io::write_boundary_poly(poly, cdt, tags);
+  const afm_io::Poly_data back = parse(poly.str());
+  AFM_CHECK(back.points.size() == nv && back.segments.size() == ns);
+  AFM_CHECK(back.point_markers.size() == nv && back.segment_markers.size() == ns);
+  AFM_CHECK(back.regions.size() == 3 && back.regions[0].attribute == 1 && back.regions[0].max_area == 2e-4);
+  AFM_CHECK(back.holes.size() == 1 && back.holes[0][0] > 0.4 && back.holes[0][0] < 0.6 && back.holes[0][1] > 0.4 &&
+            back.holes[0][1] < 0.6);
+  CDT again;
+  afm_io::insert_poly(again, back);
+  std::size_t faces = 0;
+  for(auto f = again.finite_faces_begin(); f != again.finite_faces_end(); ++f) faces += f->is_in_domain() ? 1 : 0;
+  AFM_CHECK_MSG(faces == nt, faces << " faces in the domain of the boundary .poly, " << nt << " before");
+
+  // through write_mesh: .node also writes .edge; without tags, no markers
+  const std::string base = temp_path("tagged");
+  afm_io::write_mesh(base + ".node", cdt, tags);
+  AFM_CHECK(read_text(base + ".edge") == edge_os.str() && read_text(base + ".node") == node_os.str());
+  afm_io::write_mesh(base + ".node", cdt);
+  const std::string untagged_header = std::to_string(nv) + " 2 0 0\n";
+  AFM_CHECK(read_text(base + ".node").compare(0, untagged_header.size(), untagged_header) == 0);
+  for(const char* ext : {".node", ".ele", ".edge"}) std::remove((base + ext).c_str());
+}
+
+// Triangle's rules for markers that were not given: 1 on the boundary of
+// the domain, 0 inside; given markers win; a later region seed in the same
+// region wins; seeds outside the domain mark nothing.
+AFM_TEST_CASE(test_io_markers_and_regions_rules)
+{
+  typedef AFM::Markers_and_regions_2<CDT> Tags;
+  // a square cut in two by an interior segment, no markers in the file
+  const afm_io::Poly_data in = parse("6 2 0 0\n1 0 0\n2 1 0\n3 2 0\n4 2 1\n5 1 1\n6 0 1\n"
+                                     "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n");
+  CDT cdt;
+  const auto inserted = afm_io::insert_poly(cdt, in);
+  Tags tags = afm_io::markers_and_regions(in, inserted);
+  AFM_CHECK(!tags.has_markers() && !tags.has_regions());
+  auto marker_of_edge = [&](std::size_t a, std::size_t b) {
+    CDT::Face_handle f;
+    int i = 0;
+    AFM_CHECK(cdt.is_edge(inserted.vertices[a], inserted.vertices[b], f, i));
+    return tags.edge_marker(cdt, f, i);
+  };
+  AFM_CHECK(marker_of_edge(0, 1) == 1 && marker_of_edge(1, 4) == 0);
+  AFM_CHECK(tags.vertex_marker(cdt, inserted.vertices[1]) == 1);
+  tags.set_constraint_marker(inserted.vertices[4], inserted.vertices[1], 5); // the interior one, reversed
+  tags.set_constraint_marker(inserted.vertices[0], inserted.vertices[1], 3);
+  AFM_CHECK(marker_of_edge(1, 4) == 5 && marker_of_edge(0, 1) == 3);
+  // vertex 2 (index 1): the bottom's marker, given later, loses to the interior one given first
+  AFM_CHECK(tags.vertex_marker(cdt, inserted.vertices[1]) == 5);
+  tags.set_vertex_marker(inserted.vertices[1], 8);
+  AFM_CHECK(tags.vertex_marker(cdt, inserted.vertices[1]) == 8);
+  AFM_CHECK(tags.vertex_marker(cdt, inserted.vertices[0]) == 3 && tags.vertex_marker(cdt, inserted.vertices[2]) == 1);
+
+  tags.add_region(K::Point_2(0.5, 0.5), 1, -1);
+  tags.add_region(K::Point_2(0.2, 0.7), 4, 0.5); // the same region: wins
+  tags.add_region(K::Point_2(5, 5), 9, 1);       // outside: marks nothing
+  tags.mark_regions(cdt);
+  std::size_t left = 0, right = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const double cx = CGAL::to_double((f->vertex(0)->point().x() + f->vertex(1)->point().x() +
+                                       f->vertex(2)->point().x()) / 3);
+    if(cx < 1) {
+      AFM_CHECK(tags.region(f) == 1 && tags.region_attribute(f) == 4);
+      ++left;
+    } else {
+      AFM_CHECK(tags.region(f) == Tags::no_region && tags.region_attribute(f) == 0);
+      ++right;
+    }
+  }
+  AFM_CHECK(left == 2 && right == 2);
+}
+
 AFM_TEST_CASE(test_io_write_svg)
 {
   CDT cdt;
@@ -659,10 +848,10 @@ AFM_TEST_CASE(test_io_write_mesh_by_extension)
   // Well-formed XML to the end (CGAL's binary mode would leave a tag open).
   AFM_CHECK(vtu.size() > 12 && vtu.compare(vtu.size() - 11, 11, "</VTKFile>\n") == 0);
   AFM_CHECK(vtu.find("AppendedData") == std::string::npos);
-  // CGAL's VTU writer adds the constrained edges as line cells.
-  const std::size_t nc = static_cast<std::size_t>(
-    std::distance(cdt.constrained_edges_begin(), cdt.constrained_edges_end()));
-  AFM_CHECK(vtu.find("NumberOfCells=\"" + std::to_string(nf + nc) + "\"") != std::string::npos);
+  // The triangles only, and only the vertices they use (the streamed VTU
+  // holds the same); the segments come as line cells with the markers.
+  AFM_CHECK(vtu.find("NumberOfPoints=\"" + std::to_string(cdt.number_of_vertices()) + "\" NumberOfCells=\"" +
+                     std::to_string(nf) + "\"") != std::string::npos);
 
   afm_io::write_mesh(temp_path("out.ele"), cdt);
   AFM_CHECK(file_exists(temp_path("out.node")) && file_exists(temp_path("out.ele")));
@@ -726,6 +915,15 @@ AFM_TEST_CASE(test_io_insert_poly_rejects_bad_geometry)
     {"hole on a vertex", square + "4 0\n" + sides + "1\n1 1 1\n", 12, "hole 1 lies on vertex 3 (line 4)"},
     {"hole outside", square + "4 0\n" + sides + "2\n1 0.5 0.5\n2 3 3\n", 13,
      "hole 2 lies outside every closed boundary"},
+    {"region on a segment", square + "4 0\n" + sides + "0\n1\n1 0.5 0 1\n", 13,
+     "region 1 lies on segment 1 (line 7): a region seed must lie inside its region"},
+    {"region on a vertex", square + "4 0\n" + sides + "0\n2\n1 0.5 0.5 1\n2 0 1 2 0.1\n", 14,
+     "region 2 lies on vertex 4 (line 5)"},
+    {"region outside", square + "4 0\n" + sides + "0\n1\n1 2 2 1\n", 13,
+     "region 1 lies outside the domain to mesh (in a hole or outside every closed boundary)"},
+    {"region in a hole", "8 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 2 1\n7 2 2\n8 1 2\n8 0\n" + sides +
+     "5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 1.5 1.5\n1\n0 1.2 1.5 3\n", 22,
+     "region 0 lies outside the domain to mesh"},
     {"open boundary", square + "3 0\n1 1 2\n2 2 3\n3 3 4\n0\n", 2,
      "the boundary is open at vertex 1: 1 segment ends there (segment 1 (line 7))"},
     {"dangling segment outside", "6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 2\n6 3 2\n5 0\n" + sides + "5 5 6\n0\n", 6,

@@ -6,8 +6,12 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
+#include <CGAL/Advancing_front_mesh_2/Region_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Sizing_field_mesh_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
 
@@ -445,4 +449,58 @@ AFM_TEST_CASE(test_read_size_sources)
   std::istringstream empty("# nothing but a comment\n\n");
   AFM_CHECK(AFM::IO::read_size_sources(empty, "empty.txt").empty());
   AFM_CHECK(error_of("0 0 1\n") == "no error");
+}
+
+// Per-region area limits (Region_sizing_field_2): the field is bounded in
+// the regions with a limit, and only there; the mesh is valid and finer
+// where the limit asks for it.
+AFM_TEST_CASE(test_region_sizing_field_area_limits)
+{
+  namespace afm_io = AFM::IO;
+  typedef AFM::Uniform_sizing_field_2<K> Uniform;
+  // left: limit 2e-4; right: none; inclusion: 2e-3, above what the uniform size gives
+  const afm_io::Poly_data in = afm_geometry::tagged_regions(0.01, 2e-4, 2e-3);
+  CDT input;
+  const auto inserted = afm_io::insert_poly(input, in);
+  const AFM::Markers_and_regions_2<CDT> tags = afm_io::markers_and_regions(in, inserted);
+  const AFM::Region_sizing_field_2<CDT, Uniform> f(input, tags, Uniform(0.05));
+  const double left_h = std::sqrt(4 * 0.8 * 2e-4 / std::sqrt(3.));
+  AFM_CHECK_MSG(std::abs(f(Point(0.2, 0.2)) - left_h) < 1e-15, f(Point(0.2, 0.2)));
+  AFM_CHECK(f(Point(0.99, 0.99)) == K::FT(left_h));
+  AFM_CHECK(f(Point(1.9, 0.1)) == 0.05);   // right: no limit
+  AFM_CHECK(f(Point(1.5, 0.5)) == 0.05);   // inclusion: its limit is above the size
+  AFM_CHECK(f(Point(0.5, 0.5)) == 0.05);   // in the hole
+  AFM_CHECK(f(Point(-1, 3)) == 0.05);      // outside the domain
+  // a copy shares the regions and answers alike
+  const AFM::Region_sizing_field_2<CDT, Uniform> g = f;
+  AFM_CHECK(g(Point(0.3, 0.7)) == K::FT(left_h) && g(Point(1.2, 0.1)) == 0.05);
+  bool thrown = false;
+  try {
+    AFM::Region_sizing_field_2<CDT, Uniform>(input, tags, Uniform(0.05), 0.);
+  } catch(const std::invalid_argument&) {
+    thrown = true;
+  }
+  AFM_CHECK(thrown);
+
+  const auto r = mesh_and_check<CDT>(in, f, "tagged regions, area limit 2e-4 on the left");
+  double left_area = 0, right_area = 0;
+  std::size_t left = 0, right = 0;
+  for(const auto& t : r.mesh.triangles) {
+    const auto& a = r.mesh.vertices[t[0]];
+    const auto& b = r.mesh.vertices[t[1]];
+    const auto& c = r.mesh.vertices[t[2]];
+    const double area = 0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+    const double cx = (a[0] + b[0] + c[0]) / 3, cy = (a[1] + b[1] + c[1]) / 3;
+    if(cx < 1) {
+      left_area += area;
+      ++left;
+    } else if(std::hypot(cx - 1.5, cy - 0.5) > 0.21) {
+      right_area += area;
+      ++right;
+    }
+  }
+  AFM_CHECK(left > 0 && right > 0);
+  AFM_CHECK_MSG(left_area / left < 2e-4, "mean area on the left " << left_area / left);
+  AFM_CHECK_MSG(right_area / right > 3 * (left_area / left),
+                "the right, without a limit, is not coarser: " << right_area / right << " vs " << left_area / left);
 }

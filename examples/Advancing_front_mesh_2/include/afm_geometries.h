@@ -1093,6 +1093,75 @@ inline Poly_data offset(const Poly_data& pd, double dx, double dy)
   return out;
 }
 
+/// What a solver tags, on a domain made for it: the rectangle [0,2]x[0,1]
+/// cut by an interface at x = 1 into two regions, with a circular inclusion
+/// (radius 0.2 about (1.5, 0.5)) as a third region and a square hole (side
+/// 0.2 about (0.5, 0.5)) in the left one; every segment split at spacing
+/// `h`. Segment markers: bottom 1, right 2, top 3, left 4, interface 5,
+/// inclusion 6, hole 7; the four corners have the vertex marker 9, the
+/// other points 0. Regions: left (attribute 1, area limit `left_area`),
+/// right (attribute 2, no limit), inclusion (attribute 3, area limit
+/// `inclusion_area`).
+inline Poly_data tagged_regions(double h = 0.01, double left_area = 2e-4, double inclusion_area = 5e-5)
+{
+  Poly_data pd;
+  auto add_point = [&pd](const Point& p, int marker) {
+    pd.points.push_back(p);
+    pd.point_markers.push_back(marker);
+    return pd.points.size() - 1;
+  };
+  auto add_chain = [&pd](const std::vector<std::size_t>& ids, int marker, bool closed) {
+    for(std::size_t i = 0; i + 1 < ids.size() + (closed ? 1 : 0); ++i) {
+      pd.segments.push_back({ids[i], ids[(i + 1) % ids.size()]});
+      pd.segment_markers.push_back(marker);
+    }
+  };
+  // a straight side from a to b (both already added), its inner points new
+  auto side = [&](std::size_t a, std::size_t b) {
+    const Point pa = pd.points[a], pb = pd.points[b];
+    const std::size_t k = std::max<std::size_t>(1, std::size_t(std::llround(std::hypot(pb[0] - pa[0], pb[1] - pa[1]) / h)));
+    std::vector<std::size_t> ids(1, a);
+    for(std::size_t j = 1; j < k; ++j) {
+      const double t = double(j) / double(k);
+      ids.push_back(add_point({pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1])}, 0));
+    }
+    ids.push_back(b);
+    return ids;
+  };
+  const std::size_t c00 = add_point({0, 0}, 9), c20 = add_point({2, 0}, 9), c21 = add_point({2, 1}, 9),
+                    c01 = add_point({0, 1}, 9), m0 = add_point({1, 0}, 0), m1 = add_point({1, 1}, 0);
+  std::vector<std::size_t> bottom = side(c00, m0), bottom2 = side(m0, c20);
+  bottom.insert(bottom.end(), bottom2.begin() + 1, bottom2.end());
+  add_chain(bottom, 1, false);
+  add_chain(side(c20, c21), 2, false);
+  std::vector<std::size_t> top = side(c21, m1), top2 = side(m1, c01);
+  top.insert(top.end(), top2.begin() + 1, top2.end());
+  add_chain(top, 3, false);
+  add_chain(side(c01, c00), 4, false);
+  add_chain(side(m0, m1), 5, false);
+  std::vector<std::size_t> inclusion;
+  const std::size_t n_circle = std::max<std::size_t>(3, std::size_t(std::llround(2 * pi * 0.2 / h)));
+  for(const Point& p : circle({1.5, 0.5}, 0.2, n_circle)) inclusion.push_back(add_point(p, 0));
+  add_chain(inclusion, 6, true);
+  std::vector<std::size_t> hole;
+  for(const Point& p : subdivided_polygon({{0.4, 0.4}, {0.6, 0.4}, {0.6, 0.6}, {0.4, 0.6}}, h))
+    hole.push_back(add_point(p, 0));
+  add_chain(hole, 7, true);
+  pd.holes.push_back({0.5, 0.5});
+  Poly_data::Region left, right, inside;
+  left.seed = {{0.2, 0.2}};
+  left.attribute = 1;
+  left.max_area = left_area;
+  right.seed = {{1.9, 0.1}};
+  right.attribute = 2;
+  right.max_area = -1;
+  inside.seed = {{1.5, 0.5}};
+  inside.attribute = 3;
+  inside.max_area = inclusion_area;
+  pd.regions = {left, right, inside};
+  return pd;
+}
+
 } // namespace afm_geometry
 
 #endif // AFM_GEOMETRIES_H

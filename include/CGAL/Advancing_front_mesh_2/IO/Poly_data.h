@@ -25,15 +25,39 @@ namespace IO {
 \ingroup PkgAdvancingFrontMesh2IO
 
 A planar straight-line graph as stored in a Triangle `.poly` file:
-points, segments joining them (0-based indices into `points`) and hole
-seeds. Coordinates are kept as `double` since this is what the file holds;
+points, segments joining them (0-based indices into `points`), hole seeds,
+and what a solver tags: boundary markers of points and segments, and
+regions (a seed point with an attribute and an optional area limit).
+Coordinates are kept as `double` since this is what the file holds;
 meshing code converts them to the kernel's points once.
+
+The markers are integers as in Triangle; `point_markers` and
+`segment_markers` are either empty (the file has none) or hold one marker
+per point or segment. `Markers_and_regions_2` carries them and the regions
+onto the mesh.
 */
 struct Poly_data
 {
+  /*!
+  A region of a `.poly` file: the part of the domain around `seed` bounded
+  by segments gets `attribute` (Triangle's regional attribute), and its
+  triangles' size is limited so that their area stays near or below
+  `max_area` when it is positive (no limit when it is 0 or negative, as in
+  Triangle).
+  */
+  struct Region
+  {
+    std::array<double, 2> seed = {{0, 0}};
+    double attribute = 0;
+    double max_area = -1;
+  };
+
   std::vector<std::array<double, 2> > points;
   std::vector<std::array<std::size_t, 2> > segments;
   std::vector<std::array<double, 2> > holes;
+  std::vector<int> point_markers;   ///< empty, or one boundary marker per point
+  std::vector<int> segment_markers; ///< empty, or one boundary marker per segment
+  std::vector<Region> regions;
 
   /*!
   Where the items were read, so that a problem found after reading (by
@@ -45,8 +69,9 @@ struct Poly_data
   {
     std::string file;        ///< the `.poly` file (segments and holes)
     std::string point_file;  ///< the file of the points (the `.poly` file, or its `.node` file)
-    std::vector<std::size_t> point_lines, segment_lines, hole_lines; ///< 1-based line of each item
-    long long first_point_id = 0, first_segment_id = 0, first_hole_id = 0; ///< 0 or 1, as in the file
+    std::vector<std::size_t> point_lines, segment_lines, hole_lines, region_lines; ///< 1-based line of each item
+    long long first_point_id = 0, first_segment_id = 0, first_hole_id = 0,
+              first_region_id = 0; ///< 0 or 1, as in the file
   };
   Origin origin;
 };

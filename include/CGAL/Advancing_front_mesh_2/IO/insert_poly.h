@@ -54,6 +54,15 @@ struct Poly_insertion
   /// triangulation splits the segment (also where two segments cross
   /// exactly at an input point)
   std::size_t points_on_segments = 0;
+  /// one edge of the triangulation made of an input segment: its end
+  /// points and the segment's index in `Poly_data::segments`
+  struct Segment_piece
+  {
+    typename CDT::Vertex_handle a, b;
+    std::size_t segment;
+  };
+  /// the edges the kept segments became, split at the points inside them
+  std::vector<Segment_piece> segment_pieces;
 };
 
 namespace internal {
@@ -147,10 +156,16 @@ void poly_insert(CDT& cdt, const Poly_graph& g, Poly_insertion<CDT>& result)
   // that of fewer segments goes first, or the centre of a star of n
   // segments is searched n times (n^2 steps).
   const std::vector<std::size_t> degree = poly_segment_degrees(g, n);
-  for(std::size_t i : g.kept) {
-    const std::size_t a = g.seg_a(i), b = g.seg_b(i);
+  for(std::size_t k = 0; k < g.kept.size(); ++k) {
+    const std::size_t i = g.kept[k], a = g.seg_a(i), b = g.seg_b(i);
     if(degree[a] <= degree[b]) cdt.insert_constraint(result.vertices[a], result.vertices[b]);
     else cdt.insert_constraint(result.vertices[b], result.vertices[a]);
+    std::size_t from = a;
+    for(std::size_t p : g.inside[k]) {
+      result.segment_pieces.push_back({result.vertices[from], result.vertices[p], i});
+      from = p;
+    }
+    result.segment_pieces.push_back({result.vertices[from], result.vertices[b], i});
   }
   for(const auto& h : data.holes) result.hole_seeds.push_back(Point(h[0], h[1]));
 }
@@ -174,6 +189,20 @@ void poly_check_seeds_enclosed(CDT& cdt, const Poly_namer& name,
     if(cdt.is_infinite(f) || !f->is_in_domain())
       poly_fail(name.file(), name.hole_line(h),
                 name.hole_id(h) + " lies outside every closed boundary, so it would remove nothing");
+  }
+}
+
+// Region seeds in a hole or outside the domain would tag nothing: a region
+// meant for a part of the domain that the seed missed.
+template <class CDT>
+void poly_check_regions_in_domain(const CDT& cdt, const Poly_data& data, const Poly_namer& name)
+{
+  for(std::size_t r = 0; r < data.regions.size(); ++r) {
+    const auto f = cdt.locate(typename CDT::Point(data.regions[r].seed[0], data.regions[r].seed[1]));
+    if(cdt.is_infinite(f) || !f->is_in_domain())
+      poly_fail(name.file(), name.region_line(r),
+                name.region_id(r) + " lies outside the domain to mesh (in a hole or outside every closed "
+                                    "boundary), so it would tag nothing");
   }
 }
 
@@ -334,6 +363,9 @@ first problem in file order:
 - two segments that cross, or that overlap along a piece of line;
 - a hole seed on a segment or on a point;
 - a hole seed outside every closed boundary (it would remove nothing);
+- a region seed on a segment or on a point, or outside the domain (in a
+  hole or outside every closed boundary);
+- markers given for some points or segments but not all;
 - a boundary left open: a point at which an odd number of segments end, none
   of which has a region to mesh beside it;
 - nothing to mesh: no bounded region is left once the holes are removed;
@@ -370,6 +402,7 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
   internal::poly_find_points_on_segments(g);
   internal::poly_check_segment_pairs(g);
   internal::poly_check_holes_off_boundary(g);
+  internal::poly_check_regions_off_boundary(g);
 
   Poly_insertion<CDT> result;
   result.merged_points = g.merged_points;
@@ -384,6 +417,7 @@ Poly_insertion<CDT> insert_poly(CDT& cdt, const Poly_data& data)
   internal::poly_check_closed_boundaries(cdt, g, result);
   if(!internal::poly_has_region_to_mesh(cdt)) internal::poly_nothing_to_mesh(name);
   internal::poly_check_segments_border_domain(cdt, g, result);
+  internal::poly_check_regions_in_domain(cdt, data, name);
   return result;
 }
 

@@ -53,7 +53,8 @@ an error naming the faulty line. Accepted input:
   `id v1 v2 [marker]`, whose endpoints are vertex ids;
 - a hole header `<#holes>` and the hole lines `id x y`;
 - optionally a region header `<#regions>` and the region lines
-  `id x y attribute [maximum area]`, which are checked and then ignored;
+  `id x y attribute [maximum area]`; as in Triangle, a line without its
+  maximum area uses its attribute as the maximum area too;
 - nothing but comments and blank lines after the last section.
 
 Every line must hold exactly the number of values its section calls for:
@@ -78,8 +79,12 @@ formatting flags and locale do not matter
 \param file_name the name used in error messages and to locate the `.node`
 file
 
-\returns the points, the segments as 0-based indices into the points, and
-the hole seeds
+Vertex attributes are checked and dropped; boundary markers of vertices and
+segments and the regions are kept (`Poly_data::point_markers`,
+`Poly_data::segment_markers`, `Poly_data::regions`).
+
+\returns the points, the segments as 0-based indices into the points, the
+hole seeds, the markers and the regions
 
 \throws Poly_read_error on any problem with the input
 */
@@ -91,7 +96,7 @@ inline Poly_data read_poly(std::istream& in, const std::string& file_name)
   const long long vertex_base = internal::poly_read_vertex_section(r, file_name, data);
   internal::poly_read_segments(r, vertex_base, data);
   internal::poly_read_holes(r, data);
-  internal::poly_read_regions(r);
+  internal::poly_read_regions(r, data);
   return data;
 }
 
@@ -119,8 +124,9 @@ inline Poly_data read_poly(const std::string& file_name)
 /*!
 \ingroup PkgAdvancingFrontMesh2IO
 
-Writes `data` in Triangle's `.poly` format with 1-based ids, no attributes,
-no boundary markers and no regions.
+Writes `data` in Triangle's `.poly` format with 1-based ids and no vertex
+attributes; boundary markers of points and segments are written when
+`data` has them, and the region section when it has regions.
 
 Coordinates are written with `max_digits10` significant digits and in the
 classic locale, so that `read_poly()` gives back exactly the same doubles
@@ -129,8 +135,9 @@ whatever the stream's formatting state; that state is restored afterwards.
 \param os the output stream
 \param data the graph to write
 
-\throws std::invalid_argument if a coordinate is not finite, or a segment
-has an endpoint out of range or joins a point to itself, since `read_poly()`
+\throws std::invalid_argument if a coordinate, attribute or area is not
+finite, a segment has an endpoint out of range or joins a point to itself,
+or a marker list is neither empty nor one per item, since `read_poly()`
 would reject the file
 */
 inline void write_poly(std::ostream& os, const Poly_data& data)
@@ -148,6 +155,14 @@ inline void write_poly(std::ostream& os, const Poly_data& data)
   for(const std::array<double, 2>& h : data.holes)
     if(!std::isfinite(h[0]) || !std::isfinite(h[1]))
       throw std::invalid_argument("write_poly: hole coordinate is not finite");
+  if(!data.point_markers.empty() && data.point_markers.size() != n)
+    throw std::invalid_argument("write_poly: point_markers must be empty or hold one marker per point");
+  if(!data.segment_markers.empty() && data.segment_markers.size() != data.segments.size())
+    throw std::invalid_argument("write_poly: segment_markers must be empty or hold one marker per segment");
+  for(const Poly_data::Region& r : data.regions)
+    if(!std::isfinite(r.seed[0]) || !std::isfinite(r.seed[1]) || !std::isfinite(r.attribute) ||
+       !std::isfinite(r.max_area))
+      throw std::invalid_argument("write_poly: region seed, attribute or area is not finite");
 
   // formatting and locale only: restoring the error state would hide a failed write
   boost::io::ios_base_all_saver format_saver(os);
@@ -157,16 +172,28 @@ inline void write_poly(std::ostream& os, const Poly_data& data)
   os.precision(std::numeric_limits<double>::max_digits10);
   os.width(0);
 
-  os << n << " 2 0 0\n";
-  for(std::size_t i = 0; i < n; ++i)
-    os << (i + 1) << ' ' << data.points[i][0] << ' ' << data.points[i][1] << '\n';
-  os << data.segments.size() << " 0\n";
-  for(std::size_t i = 0; i < data.segments.size(); ++i)
-    os << (i + 1) << ' ' << (data.segments[i][0] + 1) << ' '
-       << (data.segments[i][1] + 1) << '\n';
+  const bool point_markers = !data.point_markers.empty(), segment_markers = !data.segment_markers.empty();
+  os << n << " 2 0 " << (point_markers ? 1 : 0) << '\n';
+  for(std::size_t i = 0; i < n; ++i) {
+    os << (i + 1) << ' ' << data.points[i][0] << ' ' << data.points[i][1];
+    if(point_markers) os << ' ' << data.point_markers[i];
+    os << '\n';
+  }
+  os << data.segments.size() << ' ' << (segment_markers ? 1 : 0) << '\n';
+  for(std::size_t i = 0; i < data.segments.size(); ++i) {
+    os << (i + 1) << ' ' << (data.segments[i][0] + 1) << ' ' << (data.segments[i][1] + 1);
+    if(segment_markers) os << ' ' << data.segment_markers[i];
+    os << '\n';
+  }
   os << data.holes.size() << '\n';
   for(std::size_t i = 0; i < data.holes.size(); ++i)
     os << (i + 1) << ' ' << data.holes[i][0] << ' ' << data.holes[i][1] << '\n';
+  if(data.regions.empty()) return;
+  os << data.regions.size() << '\n';
+  for(std::size_t i = 0; i < data.regions.size(); ++i) {
+    const Poly_data::Region& r = data.regions[i];
+    os << (i + 1) << ' ' << r.seed[0] << ' ' << r.seed[1] << ' ' << r.attribute << ' ' << r.max_area << '\n';
+  }
 }
 
 /*!

@@ -14,18 +14,17 @@
 
 // The header users include for the mesh writers: write_mesh() below, and
 // through the headers it includes write_OFF(), write_triangle_node_ele(),
-// write_gmsh_msh() (write_mesh_formats.h) and write_SVG() with SVG_options
-// (write_SVG.h). Mesh_quality.h is not used here; it stays because this
+// write_boundary_poly() (write_mesh_formats.h), write_gmsh_msh()
+// (write_gmsh_msh.h), write_mesh_VTU() (write_mesh_VTU.h) and write_SVG()
+// with SVG_options (write_SVG.h). Mesh_quality.h is not used here; it stays because this
 // header has always provided it.
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Mesh_writer_common.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_gmsh_msh.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_mesh_VTU.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh_formats.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_SVG.h>
-
-#include <CGAL/IO/io.h>
-#include <CGAL/IO/write_VTU.h>
-
-#include <boost/io/ios_state.hpp>
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 
 #include <ostream>
 #include <stdexcept>
@@ -35,16 +34,51 @@ namespace CGAL {
 namespace Advancing_front_mesh_2 {
 namespace IO {
 
+namespace internal {
+
+template <class CDT>
+void write_mesh(const std::string& file_name, const CDT& cdt, const Markers_and_regions_2<CDT>* tags)
+{
+  const std::string ext = internal::mesh_lower_extension(file_name);
+  if(ext == "off") {
+    internal::mesh_write_file(file_name, [&](std::ostream& os) { write_OFF(os, cdt); });
+  } else if(ext == "vtu") {
+    internal::mesh_write_file(file_name, [&](std::ostream& os) {
+      if(tags != nullptr) write_mesh_VTU(os, cdt, *tags);
+      else write_mesh_VTU(os, cdt);
+    });
+  } else if(ext == "node" || ext == "ele") {
+    const std::string base = file_name.substr(0, file_name.size() - ext.size() - 1);
+    if(tags != nullptr) write_triangle_node_ele(base, cdt, *tags);
+    else write_triangle_node_ele(base, cdt);
+  } else if(ext == "poly") {
+    const Markers_and_regions_2<CDT> none;
+    internal::mesh_write_file(file_name,
+                              [&](std::ostream& os) { write_boundary_poly(os, cdt, tags != nullptr ? *tags : none); });
+  } else if(ext == "msh") {
+    internal::mesh_write_file(file_name, [&](std::ostream& os) {
+      if(tags != nullptr) write_gmsh_msh(os, cdt, *tags);
+      else write_gmsh_msh(os, cdt);
+    });
+  } else if(ext == "svg") {
+    internal::mesh_write_file(file_name, [&](std::ostream& os) { write_SVG(os, cdt); });
+  } else {
+    throw std::invalid_argument("write_mesh: unknown extension of '" + file_name +
+                                "' (expected .off, .vtu, .node, .ele, .poly, .msh or .svg)");
+  }
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgAdvancingFrontMesh2IO
 
 Writes the in-domain triangles of `cdt` to `file_name`, in the format given
 by its extension (case-insensitive):
 - `.off`: `write_OFF()`;
-- `.vtu`: `CGAL::IO::write_VTU()` in ASCII mode with `max_digits10` digits.
-  This writer is CGAL's: it lists all vertices of the triangulation, not only
-  those of the domain, and adds the constrained edges as line cells;
+- `.vtu`: `write_mesh_VTU()`, ASCII;
 - `.node` or `.ele`: `write_triangle_node_ele()`, which writes both files;
+- `.poly`: `write_boundary_poly()`, the boundary of the domain;
 - `.msh`: `write_gmsh_msh()`;
 - `.svg`: `write_SVG()` with default options.
 
@@ -61,31 +95,30 @@ or written
 template <class CDT>
 void write_mesh(const std::string& file_name, const CDT& cdt)
 {
-  const std::string ext = internal::mesh_lower_extension(file_name);
-  if(ext == "off") {
-    internal::mesh_write_file(file_name, [&](std::ostream& os) { write_OFF(os, cdt); });
-  } else if(ext == "vtu") {
-    internal::mesh_write_file(file_name, [&](std::ostream& os) {
-      // ASCII, because CGAL 5.5's binary mode leaves out the closing
-      // </AppendedData> tag, so that XML parsers (meshio, for one) reject the
-      // file, and dumps the bytes of the kernel's FT as if they were doubles,
-      // which is garbage for any kernel but Epick.
-      // formatting and locale only: restoring the error state would hide a failed write
-      boost::io::ios_base_all_saver format_saver(os);
-      boost::io::ios_locale_saver locale_saver(os);
-      internal::mesh_set_exact_format(os);
-      CGAL::IO::write_VTU(os, cdt, CGAL::IO::ASCII);
-    });
-  } else if(ext == "node" || ext == "ele") {
-    write_triangle_node_ele(file_name.substr(0, file_name.size() - ext.size() - 1), cdt);
-  } else if(ext == "msh") {
-    internal::mesh_write_file(file_name, [&](std::ostream& os) { write_gmsh_msh(os, cdt); });
-  } else if(ext == "svg") {
-    internal::mesh_write_file(file_name, [&](std::ostream& os) { write_SVG(os, cdt); });
-  } else {
-    throw std::invalid_argument("write_mesh: unknown extension of '" + file_name +
-                                "' (expected .off, .vtu, .node, .ele, .msh or .svg)");
-  }
+  internal::write_mesh(file_name, cdt, static_cast<const Markers_and_regions_2<CDT>*>(nullptr));
+}
+
+/*!
+\ingroup PkgAdvancingFrontMesh2IO
+
+Writes the in-domain triangles of `cdt` with their markers and regions to
+`file_name`, in the format given by its extension, as
+`write_mesh(const std::string&, const CDT&)` but with the writers that take
+`tags`: `.node`/`.ele` also write `.edge`, and `.node`, `.ele`, `.edge`,
+`.poly`, `.msh` and `.vtu` carry the markers and region attributes (OFF and
+SVG have no place for them).
+
+\param file_name path of the file to create or overwrite
+\param cdt the meshed triangulation
+\param tags its markers and regions, with `Markers_and_regions_2::mark_regions()`
+called on the current faces of `cdt` when there are regions
+
+\throws as `write_mesh(const std::string&, const CDT&)`
+*/
+template <class CDT>
+void write_mesh(const std::string& file_name, const CDT& cdt, const Markers_and_regions_2<CDT>& tags)
+{
+  internal::write_mesh(file_name, cdt, &tags);
 }
 
 } // namespace IO

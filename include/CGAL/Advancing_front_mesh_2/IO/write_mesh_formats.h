@@ -12,15 +12,24 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Mesh_tagged_view.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Mesh_writer_common.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_gmsh_msh.h>
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 
-#include <boost/io/ios_state.hpp>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Unique_hash_map.h>
+#include <CGAL/centroid.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Advancing_front_mesh_2 {
@@ -28,29 +37,43 @@ namespace IO {
 
 namespace internal {
 
+// Triangle's .node: with tags, one boundary marker per vertex.
 template <class CDT>
 void mesh_write_node(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  // formatting and locale only: restoring the error state would hide a failed write
-  boost::io::ios_base_all_saver format_saver(os);
-  boost::io::ios_locale_saver locale_saver(os);
-  mesh_set_exact_format(os);
-  os << m.points.size() << " 2 0 0\n";
-  for(std::size_t i = 0; i < m.points.size(); ++i)
-    os << (i + 1) << ' ' << m.points[i][0] << ' ' << m.points[i][1] << '\n';
+  const Mesh_exact_format_scope format(os);
+  os << m.points.size() << " 2 0 " << (m.tagged ? 1 : 0) << "\n";
+  for(std::size_t i = 0; i < m.points.size(); ++i) {
+    os << (i + 1) << ' ' << m.points[i][0] << ' ' << m.points[i][1];
+    if(m.tagged) os << ' ' << m.point_markers[i];
+    os << '\n';
+  }
 }
 
+// Triangle's .ele: with regions, the regional attribute of each triangle.
 template <class CDT>
 void mesh_write_ele(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  // formatting and locale only: restoring the error state would hide a failed write
-  boost::io::ios_base_all_saver format_saver(os);
-  boost::io::ios_locale_saver locale_saver(os);
-  mesh_set_exact_format(os);
-  os << m.triangles.size() << " 3 0\n";
+  const Mesh_exact_format_scope format(os);
+  os << m.triangles.size() << " 3 " << (m.has_regions ? 1 : 0) << "\n";
   for(std::size_t i = 0; i < m.triangles.size(); ++i) {
     const std::array<std::size_t, 3>& t = m.triangles[i];
-    os << (i + 1) << ' ' << (t[0] + 1) << ' ' << (t[1] + 1) << ' ' << (t[2] + 1) << '\n';
+    os << (i + 1) << ' ' << (t[0] + 1) << ' ' << (t[1] + 1) << ' ' << (t[2] + 1);
+    if(m.has_regions) os << ' ' << m.triangle_attributes[i];
+    os << '\n';
+  }
+}
+
+// Triangle's .edge, of the segments only: with tags, their markers.
+template <class CDT>
+void mesh_write_edge(std::ostream& os, const Mesh_domain_view<CDT>& m)
+{
+  const Mesh_exact_format_scope format(os);
+  os << m.segments.size() << ' ' << (m.tagged ? 1 : 0) << "\n";
+  for(std::size_t i = 0; i < m.segments.size(); ++i) {
+    os << (i + 1) << ' ' << (m.segments[i][0] + 1) << ' ' << (m.segments[i][1] + 1);
+    if(m.tagged) os << ' ' << m.segment_markers[i];
+    os << '\n';
   }
 }
 
@@ -80,10 +103,7 @@ void write_OFF(std::ostream& os, const CDT& cdt)
 {
   internal::Mesh_domain_view<CDT> m;
   internal::mesh_collect_domain(cdt, m);
-  // formatting and locale only: restoring the error state would hide a failed write
-  boost::io::ios_base_all_saver format_saver(os);
-  boost::io::ios_locale_saver locale_saver(os);
-  internal::mesh_set_exact_format(os);
+  const internal::Mesh_exact_format_scope format(os);
   os << "OFF\n" << m.points.size() << ' ' << m.triangles.size() << " 0\n";
   for(const std::array<double, 2>& p : m.points)
     os << p[0] << ' ' << p[1] << " 0\n";
@@ -120,6 +140,41 @@ void write_triangle_node_ele(std::ostream& node_os, std::ostream& ele_os,
 /*!
 \ingroup PkgAdvancingFrontMesh2IO
 
+Writes the in-domain triangles of `cdt` with their markers and regions in
+Triangle's `.node`, `.ele` and `.edge` formats, to three streams, as
+Triangle writes them with `-pA` (and `-e` restricted to the segments):
+- `.node`: one boundary marker per vertex;
+- `.ele`: when `tags` has regions, one attribute per triangle, the
+  attribute of its region (0 outside every region);
+- `.edge`: the segments of the mesh (the constrained edges beside the
+  domain, a boundary edge with the domain on its left) and their markers.
+
+The markers are those of `Markers_and_regions_2`; vertices and triangles are
+selected and numbered as in `write_OFF()`.
+
+\tparam CDT as in `write_OFF()`
+
+\param node_os receives the `.node` content
+\param ele_os receives the `.ele` content
+\param edge_os receives the `.edge` content
+\param cdt the meshed triangulation
+\param tags its markers and regions, with `Markers_and_regions_2::mark_regions()`
+called on the current faces of `cdt` when there are regions
+*/
+template <class CDT>
+void write_triangle_node_ele(std::ostream& node_os, std::ostream& ele_os, std::ostream& edge_os,
+                             const CDT& cdt, const Markers_and_regions_2<CDT>& tags)
+{
+  internal::Mesh_domain_view<CDT> m;
+  internal::mesh_collect(cdt, &tags, m);
+  internal::mesh_write_node(node_os, m);
+  internal::mesh_write_ele(ele_os, m);
+  internal::mesh_write_edge(edge_os, m);
+}
+
+/*!
+\ingroup PkgAdvancingFrontMesh2IO
+
 Writes the in-domain triangles of `cdt` to the files `basename.node` and
 `basename.ele`; see
 `write_triangle_node_ele(std::ostream&, std::ostream&, const CDT&)`.
@@ -146,75 +201,132 @@ void write_triangle_node_ele(const std::string& basename, const CDT& cdt)
 /*!
 \ingroup PkgAdvancingFrontMesh2IO
 
-Writes the in-domain triangles of `cdt` in the Gmsh MSH 4.1 ASCII format.
+Writes the in-domain triangles of `cdt` with their markers and regions to
+the files `basename.node`, `basename.ele` and `basename.edge`; see
+`write_triangle_node_ele(std::ostream&, std::ostream&, std::ostream&, const CDT&, const Markers_and_regions_2<CDT>&)`.
 
-The file holds one surface entity (tag 1) whose bounding box is that of the
-written vertices, one node block on that entity without parametric
-coordinates, and one element block of 3-node triangles (type 2); node and
-element tags are 1-based and contiguous. No physical groups are written:
-Gmsh then keeps all elements, whereas a physical group would make it drop
-anything outside it. Vertices and triangles are selected and numbered as in
-`write_OFF()`.
+\throws std::runtime_error "cannot write FILE" when a file cannot be opened
+or written
+*/
+template <class CDT>
+void write_triangle_node_ele(const std::string& basename, const CDT& cdt, const Markers_and_regions_2<CDT>& tags)
+{
+  internal::Mesh_domain_view<CDT> m;
+  internal::mesh_collect(cdt, &tags, m);
+  internal::mesh_write_file(basename + ".node",
+                            [&](std::ostream& os) { internal::mesh_write_node(os, m); });
+  internal::mesh_write_file(basename + ".ele",
+                            [&](std::ostream& os) { internal::mesh_write_ele(os, m); });
+  internal::mesh_write_file(basename + ".edge",
+                            [&](std::ostream& os) { internal::mesh_write_edge(os, m); });
+}
+
+namespace internal {
+
+// A point strictly inside each bounded region outside the domain (a hole of
+// the mesh): the centroid of its largest face, checked with the exact
+// orientation predicate in doubles (a face whose rounded centroid is not
+// strictly inside is passed over).
+template <class CDT>
+std::vector<std::array<double, 2> > mesh_hole_points(const CDT& cdt)
+{
+  typedef typename CDT::Face_handle Face_handle;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel Ek;
+  std::vector<std::array<double, 2> > holes;
+  CGAL::Unique_hash_map<Face_handle, bool> seen(false, cdt.number_of_faces());
+  auto ep = [](const typename CDT::Vertex_handle v) {
+    return Ek::Point_2(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
+  };
+  for(auto f0 = cdt.all_faces_begin(); f0 != cdt.all_faces_end(); ++f0) {
+    const Face_handle start = f0;
+    if(seen[start] || (!cdt.is_infinite(start) && start->is_in_domain())) continue;
+    std::vector<Face_handle> component, stack(1, start);
+    seen[start] = true;
+    bool bounded = true;
+    while(!stack.empty()) {
+      const Face_handle f = stack.back();
+      stack.pop_back();
+      component.push_back(f);
+      if(cdt.is_infinite(f)) bounded = false;
+      for(int i = 0; i < 3; ++i) {
+        const Face_handle g = f->neighbor(i);
+        if(cdt.is_constrained(std::make_pair(f, i)) || seen[g]) continue;
+        seen[g] = true;
+        stack.push_back(g);
+      }
+    }
+    if(!bounded) continue;
+    std::sort(component.begin(), component.end(), [&](Face_handle a, Face_handle b) {
+      const double area_a = std::abs(CGAL::area(ep(a->vertex(0)), ep(a->vertex(1)), ep(a->vertex(2))));
+      const double area_b = std::abs(CGAL::area(ep(b->vertex(0)), ep(b->vertex(1)), ep(b->vertex(2))));
+      return area_a > area_b;
+    });
+    for(const Face_handle f : component) {
+      const Ek::Point_2 a = ep(f->vertex(0)), b = ep(f->vertex(1)), c = ep(f->vertex(2));
+      const Ek::Point_2 g = CGAL::centroid(a, b, c);
+      const CGAL::Orientation o = CGAL::orientation(a, b, c);
+      if(o != CGAL::COLLINEAR && CGAL::orientation(a, b, g) == o && CGAL::orientation(b, c, g) == o &&
+         CGAL::orientation(c, a, g) == o) {
+        holes.push_back({{g.x(), g.y()}});
+        break;
+      }
+    }
+  }
+  return holes;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgAdvancingFrontMesh2IO
+
+Writes the boundary of the meshed domain of `cdt` in Triangle's `.poly`
+format, so that it can be meshed again or handed to another mesher: the end
+points of the segments of the mesh (the constrained edges beside the
+domain) with their markers, the segments with their markers, one hole seed
+inside each bounded region that is not meshed, and the regions of `tags`
+(seed, attribute, area limit). `read_poly()` reads it back; meshing it
+gives the same domain.
 
 \tparam CDT as in `write_OFF()`
 
 \param os the output stream
 \param cdt the meshed triangulation
+\param tags its markers and regions
+
+\throws std::invalid_argument as `write_poly()`
 */
 template <class CDT>
-void write_gmsh_msh(std::ostream& os, const CDT& cdt)
+void write_boundary_poly(std::ostream& os, const CDT& cdt, const Markers_and_regions_2<CDT>& tags)
 {
   internal::Mesh_domain_view<CDT> m;
   internal::mesh_collect_domain(cdt, m);
-  // formatting and locale only: restoring the error state would hide a failed write
-  boost::io::ios_base_all_saver format_saver(os);
-  boost::io::ios_locale_saver locale_saver(os);
-  internal::mesh_set_exact_format(os);
-
-  const std::size_t nv = m.points.size(), nf = m.triangles.size();
-  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
-  if(nv != 0) {
-    xmin = xmax = m.points[0][0];
-    ymin = ymax = m.points[0][1];
-    for(const std::array<double, 2>& p : m.points) {
-      xmin = (std::min)(xmin, p[0]); xmax = (std::max)(xmax, p[0]);
-      ymin = (std::min)(ymin, p[1]); ymax = (std::max)(ymax, p[1]);
+  Poly_data poly;
+  const std::size_t none = (std::numeric_limits<std::size_t>::max)();
+  std::vector<std::size_t> renumbered(m.points.size(), none);
+  for(std::size_t i = 0; i < m.segments.size(); ++i) {
+    std::array<std::size_t, 2> s;
+    for(int k = 0; k < 2; ++k) {
+      std::size_t& r = renumbered[m.segments[i][k]];
+      if(r == none) {
+        r = poly.points.size();
+        poly.points.push_back(m.points[m.segments[i][k]]);
+        poly.point_markers.push_back(tags.vertex_marker(cdt, m.vertices[m.segments[i][k]]));
+      }
+      s[k] = r;
     }
+    poly.segments.push_back(s);
+    poly.segment_markers.push_back(tags.edge_marker(cdt, m.segment_edges[i].first, m.segment_edges[i].second));
   }
-
-  os << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  // numPoints numCurves numSurfaces numVolumes, then the surface:
-  // tag minX minY minZ maxX maxY maxZ numPhysicalTags numBoundingCurves
-  os << "$Entities\n0 0 1 0\n"
-     << "1 " << xmin << ' ' << ymin << " 0 " << xmax << ' ' << ymax << " 0 0 0\n"
-     << "$EndEntities\n";
-
-  // numEntityBlocks numNodes minNodeTag maxNodeTag; an empty mesh has no block.
-  os << "$Nodes\n";
-  if(nv == 0) {
-    os << "0 0 0 0\n";
-  } else {
-    os << "1 " << nv << " 1 " << nv << '\n'
-       << "2 1 0 " << nv << '\n'; // entityDim entityTag parametric numNodesInBlock
-    for(std::size_t i = 1; i <= nv; ++i)
-      os << i << '\n';
-    for(const std::array<double, 2>& p : m.points)
-      os << p[0] << ' ' << p[1] << " 0\n";
+  poly.holes = internal::mesh_hole_points(cdt);
+  for(const auto& r : tags.regions()) {
+    Poly_data::Region region;
+    region.seed = {{CGAL::to_double(r.seed.x()), CGAL::to_double(r.seed.y())}};
+    region.attribute = r.attribute;
+    region.max_area = r.max_area;
+    poly.regions.push_back(region);
   }
-  os << "$EndNodes\n";
-
-  os << "$Elements\n";
-  if(nf == 0) {
-    os << "0 0 0 0\n";
-  } else {
-    os << "1 " << nf << " 1 " << nf << '\n'
-       << "2 1 2 " << nf << '\n'; // entityDim entityTag elementType numElementsInBlock
-    for(std::size_t i = 0; i < nf; ++i) {
-      const std::array<std::size_t, 3>& t = m.triangles[i];
-      os << (i + 1) << ' ' << (t[0] + 1) << ' ' << (t[1] + 1) << ' ' << (t[2] + 1) << '\n';
-    }
-  }
-  os << "$EndElements\n";
+  write_poly(os, poly);
 }
 
 } // namespace IO

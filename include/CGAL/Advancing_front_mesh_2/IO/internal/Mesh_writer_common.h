@@ -15,6 +15,8 @@
 #include <CGAL/Unique_hash_map.h>
 #include <CGAL/number_utils.h>
 
+#include <boost/io/ios_state.hpp>
+
 #include <array>
 #include <cstddef>
 #include <fstream>
@@ -24,6 +26,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -40,8 +43,21 @@ template <class CDT>
 struct Mesh_domain_view
 {
   std::vector<std::array<double, 2> > points;
+  std::vector<typename CDT::Vertex_handle> vertices; // parallel to `points`
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<typename CDT::Face_handle> faces; // parallel to `triangles`
+  // The constrained edges beside the domain, each once: a boundary edge
+  // with the domain on its left.
+  std::vector<std::array<std::size_t, 2> > segments;
+  std::vector<std::pair<typename CDT::Face_handle, int> > segment_edges; // parallel to `segments`
+
+  // Filled by mesh_collect_tags() (Mesh_tagged_view.h) when the writer was
+  // given markers and regions.
+  bool tagged = false;
+  std::vector<int> point_markers, segment_markers;
+  std::vector<double> triangle_attributes;
+  std::vector<std::size_t> triangle_regions;
+  bool has_regions = false;
 };
 
 template <class CDT>
@@ -64,11 +80,25 @@ void mesh_collect_domain(const CDT& cdt, Mesh_domain_view<CDT>& m)
         k = m.points.size();
         m.points.push_back(std::array<double, 2>{{CGAL::to_double(v->point().x()),
                                                   CGAL::to_double(v->point().y())}});
+        m.vertices.push_back(v);
       }
       t[i] = k;
     }
     m.triangles.push_back(t);
     m.faces.push_back(f);
+  }
+  CGAL::Unique_hash_map<Face_handle, std::size_t> face_index(none, m.faces.size());
+  for(std::size_t t = 0; t < m.faces.size(); ++t) face_index[m.faces[t]] = t;
+  for(std::size_t t = 0; t < m.faces.size(); ++t) {
+    const Face_handle f = m.faces[t];
+    for(int i = 0; i < 3; ++i) {
+      if(!cdt.is_constrained(std::make_pair(f, i))) continue;
+      // an edge between two domain faces is listed from the face seen first
+      const std::size_t other = face_index[f->neighbor(i)];
+      if(other != none && other < t) continue;
+      m.segments.push_back({{index[f->vertex(CDT::ccw(i))], index[f->vertex(CDT::cw(i))]}});
+      m.segment_edges.emplace_back(f, i);
+    }
   }
 }
 
@@ -83,6 +113,19 @@ inline void mesh_set_exact_format(std::ostream& os)
   os.precision(std::numeric_limits<double>::max_digits10);
   os.width(0);
 }
+
+// The exact number format for the lifetime of the scope, the stream's
+// formatting and locale restored afterwards (not its error state: that
+// would hide a failed write).
+class Mesh_exact_format_scope
+{
+public:
+  explicit Mesh_exact_format_scope(std::ostream& os) : format_(os), locale_(os) { mesh_set_exact_format(os); }
+
+private:
+  boost::io::ios_base_all_saver format_;
+  boost::io::ios_locale_saver locale_;
+};
 
 template <class Writer>
 void mesh_write_file(const std::string& file_name, Writer writer)

@@ -52,6 +52,7 @@ public:
   std::size_t point_line(std::size_t i) const { return at(d_.origin.point_lines, i); }
   std::size_t segment_line(std::size_t i) const { return at(d_.origin.segment_lines, i); }
   std::size_t hole_line(std::size_t i) const { return at(d_.origin.hole_lines, i); }
+  std::size_t region_line(std::size_t i) const { return at(d_.origin.region_lines, i); }
 
   std::string point(std::size_t i) const
   {
@@ -77,6 +78,10 @@ public:
   std::string hole_id(std::size_t i) const
   {
     return "hole " + std::to_string(d_.origin.first_hole_id + static_cast<long long>(i));
+  }
+  std::string region_id(std::size_t i) const
+  {
+    return "region " + std::to_string(d_.origin.first_region_id + static_cast<long long>(i));
   }
   std::string point_id(std::size_t i) const
   {
@@ -166,6 +171,16 @@ inline void poly_check_finite(const Poly_data& data, const Poly_namer& name)
   for(std::size_t i = 0; i < data.holes.size(); ++i)
     if(!std::isfinite(data.holes[i][0]) || !std::isfinite(data.holes[i][1]))
       poly_fail(name.file(), name.hole_line(i), name.hole_id(i) + " has a coordinate that is not a finite number");
+  for(std::size_t i = 0; i < data.regions.size(); ++i) {
+    const Poly_data::Region& r = data.regions[i];
+    if(!std::isfinite(r.seed[0]) || !std::isfinite(r.seed[1]) || !std::isfinite(r.attribute) ||
+       !std::isfinite(r.max_area))
+      poly_fail(name.file(), name.region_line(i), name.region_id(i) + " has a value that is not a finite number");
+  }
+  if(!data.point_markers.empty() && data.point_markers.size() != data.points.size())
+    poly_fail(name.point_file(), 0, "point_markers must be empty or hold one marker per point");
+  if(!data.segment_markers.empty() && data.segment_markers.size() != data.segments.size())
+    poly_fail(name.file(), 0, "segment_markers must be empty or hold one marker per segment");
 }
 
 // Points: each one represented by the first point at its position.
@@ -371,40 +386,65 @@ inline void poly_check_segment_pairs(const Poly_graph& g)
 }
 
 // Hole seeds on segments or points (rejected).
-inline void poly_check_holes_off_boundary(Poly_graph& g)
+// Per seed point (hole or region), what it lies on: (1, segment) or
+// (2, point), the first by index; (0, 0) when it lies off the boundary.
+inline std::vector<std::pair<int, std::size_t> >
+poly_seeds_on_boundary(const Poly_graph& g, const std::vector<std::array<double, 2> >& seeds)
 {
   typedef Poly_graph::Box Box;
   typedef Poly_graph::Ep Ep;
   const Poly_data& data = g.data;
-  const Poly_namer& name = g.name;
   const Poly_graph::Ek ek;
   const auto orientation = ek.orientation_2_object();
   const auto strictly_between = ek.collinear_are_strictly_ordered_along_line_2_object();
-  // per hole: what it lies on (1: a segment, 2: a point), the first by index
-  std::vector<std::pair<int, std::size_t> > hole_on(data.holes.size(), {0, 0});
-  auto note = [&hole_on](std::size_t h, int kind, std::size_t item) {
-    if(hole_on[h].first == 0 || std::make_pair(kind, item) < hole_on[h]) hole_on[h] = {kind, item};
+  std::vector<std::pair<int, std::size_t> > seed_on(seeds.size(), {0, 0});
+  auto note = [&seed_on](std::size_t h, int kind, std::size_t item) {
+    if(seed_on[h].first == 0 || std::make_pair(kind, item) < seed_on[h]) seed_on[h] = {kind, item};
   };
-  std::vector<Box> hole_boxes;
-  for(std::size_t h = 0; h < data.holes.size(); ++h)
-    hole_boxes.push_back(Box(Ep(data.holes[h][0], data.holes[h][1]).bbox(), h));
-  CGAL::box_intersection_d(hole_boxes.begin(), hole_boxes.end(), g.segment_boxes.begin(), g.segment_boxes.end(),
+  std::vector<Box> seed_boxes;
+  for(std::size_t h = 0; h < seeds.size(); ++h)
+    seed_boxes.push_back(Box(Ep(seeds[h][0], seeds[h][1]).bbox(), h));
+  // box_intersection_d reorders its ranges: copies keep the graph's intact
+  std::vector<Box> segment_boxes = g.segment_boxes, point_boxes = g.point_boxes;
+  CGAL::box_intersection_d(seed_boxes.begin(), seed_boxes.end(), segment_boxes.begin(), segment_boxes.end(),
                            [&](const Box& hb, const Box& s) {
     const std::size_t h = hb.info(), j = s.info();
-    const Ep ph(data.holes[h][0], data.holes[h][1]), pa = g.ep(g.seg_a(j)), pb = g.ep(g.seg_b(j));
+    const Ep ph(seeds[h][0], seeds[h][1]), pa = g.ep(g.seg_a(j)), pb = g.ep(g.seg_b(j));
     if(orientation(pa, pb, ph) == CGAL::COLLINEAR && strictly_between(pa, ph, pb)) note(h, 1, j);
   });
-  CGAL::box_intersection_d(hole_boxes.begin(), hole_boxes.end(), g.point_boxes.begin(), g.point_boxes.end(),
+  CGAL::box_intersection_d(seed_boxes.begin(), seed_boxes.end(), point_boxes.begin(), point_boxes.end(),
                            [&](const Box& hb, const Box& p) {
     const std::size_t h = hb.info(), i = p.info();
-    if(data.holes[h] == data.points[i]) note(h, 2, i);
+    if(seeds[h] == data.points[i]) note(h, 2, i);
   });
-  for(std::size_t h = 0; h < data.holes.size(); ++h)
+  return seed_on;
+}
+
+inline void poly_check_holes_off_boundary(const Poly_graph& g)
+{
+  const Poly_namer& name = g.name;
+  const auto hole_on = poly_seeds_on_boundary(g, g.data.holes);
+  for(std::size_t h = 0; h < hole_on.size(); ++h)
     if(hole_on[h].first != 0)
       poly_fail(name.file(), name.hole_line(h),
                 name.hole_id(h) + " lies on " +
                   (hole_on[h].first == 1 ? name.segment(hole_on[h].second) : name.point(hole_on[h].second)) +
                   ": a hole seed must lie inside the hole, off its boundary");
+}
+
+// A region seed on the boundary would leave its region ambiguous.
+inline void poly_check_regions_off_boundary(const Poly_graph& g)
+{
+  const Poly_namer& name = g.name;
+  std::vector<std::array<double, 2> > seeds;
+  for(const Poly_data::Region& r : g.data.regions) seeds.push_back(r.seed);
+  const auto region_on = poly_seeds_on_boundary(g, seeds);
+  for(std::size_t h = 0; h < region_on.size(); ++h)
+    if(region_on[h].first != 0)
+      poly_fail(name.file(), name.region_line(h),
+                name.region_id(h) + " lies on " +
+                  (region_on[h].first == 1 ? name.segment(region_on[h].second) : name.point(region_on[h].second)) +
+                  ": a region seed must lie inside its region, off the segments that bound it");
 }
 
 } // namespace internal

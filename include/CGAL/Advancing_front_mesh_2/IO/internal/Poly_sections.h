@@ -113,7 +113,7 @@ inline long long poly_read_vertices(Poly_line_reader& r,
     for(std::size_t a = 0; a < h.attributes; ++a)
       r.real(3 + a, "attribute");
     if(h.markers != 0)
-      r.marker(3 + h.attributes);
+      data.point_markers.push_back(r.marker(3 + h.attributes));
     data.points.push_back(std::array<double, 2>{{x, y}});
     data.origin.point_lines.push_back(r.line());
   }
@@ -214,7 +214,7 @@ inline void poly_read_segments(Poly_line_reader& r, long long vertex_base, Poly_
              std::to_string(static_cast<long long>(seg[0]) + vertex_base) +
              " to itself");
     if(segment_markers != 0)
-      r.marker(3);
+      data.segment_markers.push_back(r.marker(3));
     data.segments.push_back(seg);
     data.origin.segment_lines.push_back(r.line());
   }
@@ -243,10 +243,9 @@ inline void poly_read_holes(Poly_line_reader& r, Poly_data& data)
   data.origin.first_hole_id = hole_base;
 }
 
-// Regional attributes and area constraints belong to Triangle's own
-// refinement; they are validated so that a damaged file is still caught,
-// then dropped. Nothing may follow them, or the holes if they are left out.
-inline void poly_read_regions(Poly_line_reader& r)
+// Regional attributes and area limits, kept. Nothing may follow them, or
+// the holes if they are left out.
+inline void poly_read_regions(Poly_line_reader& r, Poly_data& data)
 {
   if(!r.next())
     return;
@@ -264,12 +263,16 @@ inline void poly_read_regions(Poly_line_reader& r)
              poly_count_phrase(r.size(), "value", "values") +
              ", expected 4 or 5");
     poly_check_id(r, "region", i, region_base);
-    r.real(1, "coordinate");
-    r.real(2, "coordinate");
-    r.real(3, "region attribute");
-    if(r.size() == 5)
-      r.real(4, "maximum area");
+    Poly_data::Region region;
+    region.seed[0] = r.real(1, "coordinate");
+    region.seed[1] = r.real(2, "coordinate");
+    region.attribute = r.real(3, "region attribute");
+    // as Triangle: without a fifth value, the fourth is also the area limit
+    region.max_area = r.size() == 5 ? r.real(4, "maximum area") : region.attribute;
+    data.regions.push_back(region);
+    data.origin.region_lines.push_back(r.line());
   }
+  data.origin.first_region_id = region_base;
   if(r.next())
     r.fail("unexpected content after the last section");
 }
