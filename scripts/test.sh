@@ -10,7 +10,7 @@
 # installed package (a build test) in the plain Debug build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh clang libclang-rt-14-dev
+bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gmsh
 jobs=${AFM_JOBS:-2}
 for variant in debug asan; do
   sanitize=OFF models=OFF package=ON

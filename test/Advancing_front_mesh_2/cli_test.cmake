@@ -194,6 +194,10 @@ expect_input_error(nothing_left "${SQUARE}4 0\n${SQUARE_SEGMENTS}1\n1 0.5 0.5\n"
 expect_input_error(leaking_polyline "8 2 0 0\n1 0 0\n2 -1 0\n3 -1 0.3\n4 0 1\n5 -1 1\n6 -1 0.7\n7 1 0\n8 1 1\n9 0\n1 1 2\n2 2 3\n3 3 1\n4 4 5\n5 5 6\n6 6 4\n7 1 7\n8 7 8\n9 8 4\n0\n"
                    ":17: segment 7 borders no region to mesh")
 expect_input_error(no_segments "${SQUARE}0 0\n0\n" ": nothing to mesh")
+expect_input_error(region_outside "${SQUARE}4 0\n${SQUARE_SEGMENTS}0\n1\n1 2 2 1 0.1\n"
+                   ":13: region 1 lies outside the domain to mesh")
+expect_input_error(region_on_segment "${SQUARE}4 0\n${SQUARE_SEGMENTS}0\n1\n1 0.5 0 1 0.1\n"
+                   ":13: region 1 lies on segment 1 \\(line 7\\)")
 
 # input whose meaning is plain is repaired, with a note: a duplicate point
 # (used by a segment), a repeated segment (reversed), a point inside a segment
@@ -231,7 +235,7 @@ expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --max-steps -3 -o ${WORK
 
 # streaming: the same mesh as in memory (afm_check_mesh on the streamed OFF,
 # same triangle count), all streamable formats at once
-expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.01 -o ${WORK_DIR}/incore.off --stats)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.01 -o ${WORK_DIR}/incore.off -o ${WORK_DIR}/incore.vtu --stats)
 string(REGEX MATCH "\"triangles\":[0-9]+" incore_triangles "${LAST_OUT}")
 expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.01 --stream -o ${WORK_DIR}/st.off -o ${WORK_DIR}/st.vtu
             -o ${WORK_DIR}/st.msh -o ${WORK_DIR}/st.node --stats)
@@ -252,6 +256,22 @@ if(parts)
   message(FATAL_ERROR "--stream left part files: ${parts}")
 endif()
 expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/st.off)
+# the in-memory and the streamed VTU hold the same vertices (those of the triangles)
+file(READ ${WORK_DIR}/incore.vtu incore_vtu)
+file(READ ${WORK_DIR}/st.vtu streamed_vtu)
+string(REGEX MATCH "NumberOfPoints=\"[0-9]+\"" incore_points "${incore_vtu}")
+string(REGEX MATCH "NumberOfPoints=\"[0-9]+\"" streamed_points "${streamed_vtu}")
+if(NOT incore_points OR NOT incore_points STREQUAL streamed_points)
+  message(FATAL_ERROR "VTU: ${incore_points} in memory, ${streamed_points} streamed")
+endif()
+# markers and regions: streaming says it drops them, and cannot write the boundary
+expect_exit(0 ${MAKE_INPUT} tagged-regions ${WORK_DIR}/tagged.poly)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/tagged.poly --size 0.05 --stream -o ${WORK_DIR}/tagged_st.off)
+if(NOT LAST_ERR MATCHES "note: .*tagged.poly: the streamed outputs do not carry the boundary markers and regions")
+  message(FATAL_ERROR "--stream with markers: no note: ${LAST_ERR}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/tagged.poly ${WORK_DIR}/tagged_st.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/tagged.poly --size 0.05 --stream -o ${WORK_DIR}/tagged_st.poly)
 
 # restart: stop after the first checkpoint, resume, and again: the files are
 # those of the uninterrupted streaming run, byte for byte

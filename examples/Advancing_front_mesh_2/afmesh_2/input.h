@@ -6,9 +6,12 @@
 #include "options.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
+#include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
+#include <CGAL/Advancing_front_mesh_2/Region_sizing_field_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -45,7 +48,7 @@ struct Types
 // Either a uniform size or a background field, so that one mesher type
 // serves both.
 template <class K>
-struct Cli_sizing_field
+struct Cli_base_sizing_field
 {
   typedef AFM::Poisson_sizing_field_2<K> Background;
   double uniform = 0;
@@ -54,6 +57,16 @@ struct Cli_sizing_field
   {
     return background ? (*background)(p) : typename K::FT(uniform);
   }
+};
+
+// The base field, bounded in the regions with an area limit.
+template <class K>
+struct Cli_sizing_field
+{
+  typedef AFM::Region_sizing_field_2<typename Types<K>::CDT, Cli_base_sizing_field<K> > Region_field;
+  Cli_base_sizing_field<K> base;
+  std::shared_ptr<const Region_field> regions;
+  typename K::FT operator()(const typename K::Point_2& p) const { return regions ? (*regions)(p) : base(p); }
 };
 
 // Where the time of the run went before meshing (seconds).
@@ -70,6 +83,7 @@ struct Input
   AFM::IO::Poly_data poly;
   CDT cdt;
   AFM::IO::Poly_insertion<CDT> inserted;
+  AFM::Markers_and_regions_2<CDT> tags;
   std::list<typename K::Point_2> seeds;
   Cli_sizing_field<K> sizing;
   Input_times times;
@@ -95,6 +109,7 @@ void insert_boundary(const Options& opt, Input<K>& in)
     throw Input_error(e.what());
   }
   in.seeds.assign(in.inserted.hole_seeds.begin(), in.inserted.hole_seeds.end());
+  in.tags = AFM::IO::markers_and_regions(in.poly, in.inserted);
   const auto& ins = in.inserted;
   if(ins.merged_points + ins.duplicate_segments + ins.points_on_segments > 0)
     std::cerr << "afmesh_2: note: " << opt.input << ": " << ins.merged_points << " duplicate points merged, "
@@ -116,13 +131,10 @@ std::vector<AFM::Size_source_2<K> > read_sources(const Options& opt)
   return sources;
 }
 
-// --size alone: uniform; otherwise the background field of the boundary
-// spacing (grown, or diffused with --boundary-spacing diffuse) and the
-// sources (diffused), bounded above by --size when given.
 template <class K>
-void make_size_field(const Options& opt, Input<K>& in)
+void make_base_size_field(const Options& opt, Input<K>& in)
 {
-  in.sizing.uniform = opt.size;
+  in.sizing.base.uniform = opt.size;
   if(opt.has_size && opt.sources.empty()) return;
   const std::vector<AFM::Size_source_2<K> > sources = read_sources<K>(opt);
   std::vector<std::pair<typename K::Point_2, typename K::FT> > spacing;
@@ -135,7 +147,20 @@ void make_size_field(const Options& opt, Input<K>& in)
   if(opt.has_size) field_options.max_size = opt.size;
   if(opt.boundary_spacing == "diffuse")
     field_options.boundary_spacing = AFM::Poisson_sizing_field_options::DIFFUSE_WITH_SOURCES;
-  in.sizing.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
+  in.sizing.base.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
+}
+
+// --size alone: uniform; otherwise the background field of the boundary
+// spacing (grown, or diffused with --boundary-spacing diffuse) and the
+// sources (diffused), bounded above by --size when given. Either is then
+// bounded in the regions that have an area limit.
+template <class K>
+void make_size_field(const Options& opt, Input<K>& in)
+{
+  make_base_size_field(opt, in);
+  if(in.tags.has_area_limits())
+    in.sizing.regions =
+      std::make_shared<typename Cli_sizing_field<K>::Region_field>(in.cdt, in.tags, in.sizing.base);
 }
 
 } // namespace afmesh_2

@@ -109,7 +109,8 @@ inline po::options_description visible_options(Command_line& c)
      "the gradation rate, up to the sources' field or the domain's extent; 'diffuse' with the sources by "
      "the Poisson solve, as in Mavriplis (1992)")
     ("output,o", po::value<std::vector<std::string> >(&opt.outputs),
-     "output file, format chosen by extension: .off .vtu .node/.ele .msh .svg (repeatable)")
+     "output file, format chosen by extension: .off .vtu .node/.ele (with .edge) .poly (the boundary) .msh .svg "
+     "(repeatable)")
     ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
      "CGAL kernel: epick (default), epeck or exact-rational")
     ("smooth", po::value<long long>(&c.smooth)->default_value(0),
@@ -218,8 +219,9 @@ inline void check_output_formats(const Options& opt)
   for(const std::string& out : opt.outputs) {
     const std::string ext = out.substr(out.find_last_of('.') == std::string::npos ? out.size()
                                                                                  : out.find_last_of('.'));
-    if(ext != ".off" && ext != ".vtu" && ext != ".node" && ext != ".ele" && ext != ".msh" && ext != ".svg")
-      throw Usage_error("unknown output format '" + out + "' (use .off, .vtu, .node, .ele, .msh or .svg)");
+    if(ext != ".off" && ext != ".vtu" && ext != ".node" && ext != ".ele" && ext != ".poly" && ext != ".msh" &&
+       ext != ".svg")
+      throw Usage_error("unknown output format '" + out + "' (use .off, .vtu, .node, .ele, .poly, .msh or .svg)");
   }
 }
 
@@ -230,6 +232,9 @@ inline void check_streaming(const Options& opt)
   if(opt.outputs.empty()) throw Usage_error("--stream needs an output (-o)");
   for(const std::string& out : opt.outputs)
     if(ends_with(out, ".svg")) throw Usage_error("--stream cannot write pictures (.svg): they need the whole mesh");
+  for(const std::string& out : opt.outputs)
+    if(ends_with(out, ".poly"))
+      throw Usage_error("--stream cannot write the boundary (.poly): it is written with the mesh in memory");
   if(opt.smooth > 0) throw Usage_error("--stream cannot be combined with --smooth (smoothing needs the whole mesh)");
   if(!opt.histogram.empty()) throw Usage_error("--stream cannot be combined with --histogram");
 }

@@ -7,6 +7,7 @@
 
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_quality_histogram.h>
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
 
 #include <fstream>
@@ -16,12 +17,13 @@
 
 namespace afmesh_2 {
 
-// Writes one output; throws what went wrong.
+// Writes one output, with the markers and regions; throws what went wrong.
 template <class CDT>
-void write_output(const Options& opt, const std::string& out, const CDT& cdt)
+void write_output(const Options& opt, const std::string& out, const CDT& cdt,
+                  const AFM::Markers_and_regions_2<CDT>& tags)
 {
   if(!ends_with(out, ".svg")) {
-    AFM::IO::write_mesh(out, cdt);
+    AFM::IO::write_mesh(out, cdt, tags);
     return;
   }
   std::ofstream os(out);
@@ -34,17 +36,20 @@ void write_output(const Options& opt, const std::string& out, const CDT& cdt)
 }
 
 // Writes the outputs and the histogram; false (after saying which failed on
-// stderr) when one could not be written.
+// stderr) when one could not be written. The regions are found on the
+// final faces first.
 template <class CDT>
-bool write_outputs(const Options& opt, const CDT& cdt, const AFM::Mesh_quality& quality)
+bool write_outputs(const Options& opt, const CDT& cdt, AFM::Markers_and_regions_2<CDT>& tags,
+                   const AFM::Mesh_quality& quality)
 {
+  if(tags.has_regions()) tags.mark_regions(cdt);
   auto failed = [](const std::string& out, const std::exception& e) {
     std::cerr << program << ": error: " << out << ": " << e.what() << "\n";
     return false;
   };
   for(const std::string& out : opt.outputs) {
     try {
-      write_output(opt, out, cdt);
+      write_output(opt, out, cdt, tags);
     } catch(const std::exception& e) {
       return failed(out, e);
     }

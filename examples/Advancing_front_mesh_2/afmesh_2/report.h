@@ -119,8 +119,8 @@ template <class K>
 Json size_field_json(const Options& opt, const Input<K>& in)
 {
   Json j;
-  if(in.sizing.background) {
-    const auto& fs = in.sizing.background->statistics();
+  if(in.sizing.base.background) {
+    const auto& fs = in.sizing.base.background->statistics();
     j["kind"] = "poisson";
     j["sources"] = fs.number_of_sources;
     j["boundary_points"] = fs.number_of_boundary_points;

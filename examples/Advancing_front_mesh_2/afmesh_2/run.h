@@ -53,7 +53,7 @@ int finish_run_in_memory(const Options& opt, Input<K>& in, const Mesher<K>& mesh
   t.smoothing = seconds_since(t_smooth);
   const AFM::Mesh_quality q = want_quality && opt.smooth > 0 ? AFM::mesh_quality(in.cdt, in.sizing) : unsmoothed;
   const auto t_write = std::chrono::steady_clock::now();
-  if(!write_outputs(opt, in.cdt, q)) return 3;
+  if(!write_outputs(opt, in.cdt, in.tags, q)) return 3;
   t.writing = seconds_since(t_write);
   const AFM::Statistics& st = mesher.statistics();
   if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t);
@@ -68,6 +68,10 @@ int run(const Options& opt)
   const auto t_start = std::chrono::steady_clock::now();
   Input<K> in;
   load_input(opt, in);
+  if(opt.stream && (in.tags.has_markers() || in.tags.has_regions()))
+    std::cerr << "afmesh_2: note: " << opt.input
+              << ": the streamed outputs do not carry the boundary markers and regions (write without --stream "
+                 "to keep them)\n";
   Progress_visitor progress;
   progress.enabled = isatty(2) != 0;
   // a resumed run meshes in an empty triangulation: the state comes from

@@ -1,0 +1,240 @@
+#!/usr/bin/env python3
+"""Markers and regions end to end, read back with the tools users use.
+
+afmesh_2 meshes a multi-region input made by our own afm_make_input
+(tagged-regions: three regions, segment and vertex markers, area limits)
+and Triangle's la.poly from the shared data (its markers and regions),
+writing .node/.ele/.edge, .msh, .vtu and the boundary .poly. Every mesh is
+checked by the independent validity checker; the markers and regions are
+read back with our own parser of Triangle's files, with meshio (.msh and
+.vtu) and with Gmsh's own Python API (.msh), and must agree with each other
+and with the input.
+
+usage: check_markers_and_regions.py AFMESH MAKE_INPUT CHECK WORK_DIR [SHARED_DATA_DIR]
+"""
+import os
+import subprocess
+import sys
+
+import gmsh
+import meshio
+import numpy as np
+
+AFMESH, MAKE_INPUT, CHECK, WORK = sys.argv[1:5]
+SHARED = sys.argv[5] if len(sys.argv) > 5 else ""
+os.makedirs(WORK, exist_ok=True)
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAILED:", what)
+
+
+def run(*args):
+    r = subprocess.run(list(args), capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit("command failed (%d): %s\n%s%s" % (r.returncode, " ".join(args), r.stdout, r.stderr))
+    return r
+
+
+def numbers(path):
+    """The lines of a Triangle file without comments, as lists of tokens."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#")[0].split()
+            if line:
+                rows.append(line)
+    return rows
+
+
+def read_triangle(base):
+    """.node/.ele/.edge: points, point markers, triangles (0-based), attributes, segments, segment markers."""
+    node = numbers(base + ".node")
+    n, dim, nattr, nmark = map(int, node[0])
+    check(dim == 2 and nattr == 0 and nmark == 1, base + ".node header has one marker per vertex")
+    pts = np.array([[float(r[1]), float(r[2])] for r in node[1:n + 1]])
+    pmark = np.array([int(r[3]) for r in node[1:n + 1]])
+    ele = numbers(base + ".ele")
+    m, per, ea = map(int, ele[0])
+    tri = np.array([[int(r[1]) - 1, int(r[2]) - 1, int(r[3]) - 1] for r in ele[1:m + 1]])
+    attr = np.array([float(r[4]) for r in ele[1:m + 1]]) if ea == 1 else None
+    edge = numbers(base + ".edge")
+    k, em = map(int, edge[0])
+    check(em == 1, base + ".edge has one marker per segment")
+    seg = np.array([[int(r[1]) - 1, int(r[2]) - 1] for r in edge[1:k + 1]])
+    smark = np.array([int(r[3]) for r in edge[1:k + 1]])
+    return pts, pmark, tri, attr, seg, smark
+
+
+def check_formats_agree(base, pts, pmark, tri, attr, seg, smark):
+    """The .msh (meshio and Gmsh) and the .vtu (meshio) hold what the Triangle files hold."""
+    # VTU through meshio
+    v = meshio.read(base + ".vtu")
+    check(np.array_equal(v.points[:, :2], pts), base + ".vtu: the points of the .node, in its order")
+    check(np.array_equal(v.cells_dict["triangle"], tri), base + ".vtu: the triangles of the .ele")
+    check(np.array_equal(v.cells_dict["line"], seg), base + ".vtu: the segments of the .edge as lines")
+    check(np.array_equal(v.point_data["marker"], pmark), base + ".vtu: point data 'marker' = .node markers")
+    check(np.array_equal(v.cell_data_dict["marker"]["line"], smark), base + ".vtu: cell data 'marker' = .edge markers")
+    if attr is not None:
+        check(np.array_equal(v.cell_data_dict["region"]["triangle"], attr),
+              base + ".vtu: cell data 'region' = .ele attributes")
+
+    # MSH through meshio: physical tags and names
+    g = meshio.read(base + ".msh")
+    check(np.array_equal(g.points[:, :2], pts), base + ".msh: the points of the .node")
+    phys = g.cell_data_dict["gmsh:physical"]
+    # meshio merges the blocks of one cell type in file order: compare as sets of cells with their tags
+    msh_tri = {tuple(sorted(t)): int(p) for t, p in zip(g.cells_dict["triangle"], phys["triangle"])}
+    msh_seg = {tuple(sorted(s)): int(p) for s, p in zip(g.cells_dict["line"], phys["line"])}
+    check(len(msh_tri) == len(tri) and len(msh_seg) == len(seg), base + ".msh: as many triangles and lines")
+    names = {tuple(val)[::-1]: key for key, val in g.field_data.items()}  # (dim, tag) -> name
+    for s, k in zip(seg, smark):
+        tag = msh_seg.get(tuple(sorted(s)))
+        if names.get((1, tag)) != "marker_%d" % k:
+            check(False, base + ".msh: segment %s in physical group %s, expected marker_%d" % (s, names.get((1, tag)), k))
+            break
+    if attr is not None:
+        for t, a in zip(tri, attr):
+            tag = msh_tri.get(tuple(sorted(t)))
+            expected = "region_%s" % ("%g" % a if a != int(a) else "%d" % a)
+            if names.get((2, tag)) != expected:
+                check(False, base + ".msh: triangle %s in group %s, expected %s" % (t, names.get((2, tag)), expected))
+                break
+
+    # MSH through Gmsh's own reader
+    gmsh.initialize(["", "-v", "0"])
+    try:
+        gmsh.open(base + ".msh")
+        groups = gmsh.model.getPhysicalGroups()
+        gnames = {(d, t): gmsh.model.getPhysicalName(d, t) for d, t in groups}
+        counts = {}
+        for (d, t), name in gnames.items():
+            n = 0
+            for e in gmsh.model.getEntitiesForPhysicalGroup(d, t):
+                types, tags, _ = gmsh.model.mesh.getElements(d, e)
+                n += sum(len(x) for x in tags)
+            counts[name] = n
+        for k in set(smark.tolist()):
+            check(counts.get("marker_%d" % k) == int((smark == k).sum()),
+                  base + ".msh (Gmsh): group marker_%d holds its %d segments" % (k, (smark == k).sum()))
+        if attr is not None:
+            for a in set(attr.tolist()):
+                name = "region_%s" % ("%g" % a if a != int(a) else "%d" % a)
+                check(counts.get(name) == int((attr == a).sum()),
+                      base + ".msh (Gmsh): group %s holds its %d triangles (got %s)" % (name, (attr == a).sum(),
+                                                                                       counts.get(name)))
+        node_tags, coords, _ = gmsh.model.mesh.getNodes()
+        check(len(node_tags) == len(pts), base + ".msh (Gmsh): %d nodes" % len(pts))
+    finally:
+        gmsh.finalize()
+
+
+def inside(p, polygon):
+    """Even-odd rule, for points off the polygon's boundary."""
+    x, y = p
+    c = False
+    for i in range(len(polygon)):
+        (x1, y1), (x2, y2) = polygon[i], polygon[i - 1]
+        if (y1 > y) != (y2 > y) and x < x1 + (y - y1) * (x2 - x1) / (y2 - y1):
+            c = not c
+    return c
+
+
+def triangle_areas(pts, tri):
+    a, b, c = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    return 0.5 * np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1]))
+
+
+# --- our multi-region input --------------------------------------------------------------------------------
+tr = os.path.join(WORK, "tr")
+run(MAKE_INPUT, "tagged-regions", tr + ".poly")
+run(AFMESH, tr + ".poly", "--size", "0.05", "-o", tr + ".node", "-o", tr + ".msh", "-o", tr + ".vtu",
+    "-o", tr + ".off", "-o", tr + "_boundary.poly")
+run(CHECK, tr + ".poly", tr + ".off")
+pts, pmark, tri, attr, seg, smark = read_triangle(tr)
+check(attr is not None, "tr.ele has the region attribute")
+check_formats_agree(tr, pts, pmark, tri, attr, seg, smark)
+
+# the region of each triangle, from the geometry: left of x = 1 is region 1,
+# inside the inclusion (the polygon of the marker-6 segments) region 3, else 2
+inclusion = sorted({tuple(pts[v]) for s, k in zip(seg, smark) if k == 6 for v in s},
+                   key=lambda p: np.arctan2(p[1] - 0.5, p[0] - 1.5))
+centre = pts[tri].mean(axis=1)
+expected = np.array([1 if c[0] < 1 else (3 if inside(c, inclusion) else 2) for c in centre])
+check(np.array_equal(attr, expected), "tr: every triangle has the attribute of the region it lies in")
+
+# segment markers from the geometry, vertex markers by Triangle's rules
+def segment_marker(a, b):
+    if a[1] == 0 and b[1] == 0: return 1
+    if a[0] == 2 and b[0] == 2: return 2
+    if a[1] == 1 and b[1] == 1: return 3
+    if a[0] == 0 and b[0] == 0: return 4
+    if a[0] == 1 and b[0] == 1: return 5
+    if abs(np.hypot(*(a - (1.5, 0.5))) - 0.2) < 1e-9: return 6
+    return 7
+expected_smark = np.array([segment_marker(pts[s[0]], pts[s[1]]) for s in seg])
+check(np.array_equal(smark, expected_smark), "tr: every segment has its marker")
+check(len(seg) == 906, "tr: all 906 input segments are segments of the mesh (got %d)" % len(seg))
+on_segment = {}
+for s, k in zip(seg, smark):
+    for v in s:
+        on_segment.setdefault(v, []).append(k)
+corners = {(0., 0.), (2., 0.), (2., 1.), (0., 1.)}
+for i, p in enumerate(pts):
+    want = 9 if tuple(p) in corners else (min(on_segment[i]) if i in on_segment else 0)
+    if pmark[i] != want:
+        check(False, "tr: vertex %d at %s has marker %d, expected %d" % (i, p, pmark[i], want))
+        break
+
+# the area limits change the mesh: region 1 (limit 2e-4) and 3 (5e-5) are
+# finer than region 2 (no limit, size 0.05), and mostly within their limits
+area = triangle_areas(pts, tri)
+for r, limit in ((1, 2e-4), (3, 5e-5)):
+    sel = attr == r
+    check(area[sel].mean() < limit, "tr: region %d's mean area %.3g below its limit %.3g" % (r, area[sel].mean(), limit))
+    check((area[sel] > limit).mean() < 0.05, "tr: region %d: %.1f%% of the triangles above the limit" %
+          (r, 100 * (area[sel] > limit).mean(), ))
+check(area[attr == 2].mean() > 3 * area[attr == 1].mean(), "tr: region 2, without a limit, is coarser")
+
+# the boundary .poly meshes again, to the same regions
+run(AFMESH, tr + "_boundary.poly", "--size", "0.05", "-o", tr + "_again.node", "-o", tr + "_again.off")
+run(CHECK, tr + "_boundary.poly", tr + "_again.off")
+pts2, pmark2, tri2, attr2, seg2, smark2 = read_triangle(tr + "_again")
+check(sorted(set(attr2.tolist())) == [1.0, 2.0, 3.0], "tr_boundary.poly keeps the regions")
+check(sorted(smark2.tolist()) == sorted(smark.tolist()), "tr_boundary.poly keeps the segment markers")
+check(abs(len(tri2) - len(tri)) <= 0.02 * len(tri), "tr_boundary.poly meshes to as many triangles (%d, %d)" %
+      (len(tri2), len(tri)))
+
+# --- Triangle's la.poly ------------------------------------------------------------------------------------
+la_in = os.path.join(SHARED, "triangle_drufat", "la.poly")
+if SHARED and os.path.exists(la_in):
+    la = os.path.join(WORK, "la")
+    run(AFMESH, la_in, "-o", la + ".node", "-o", la + ".msh", "-o", la + ".vtu", "-o", la + ".off")
+    run(CHECK, la_in, la + ".off")
+    pts, pmark, tri, attr, seg, smark = read_triangle(la)
+    check_formats_agree(la, pts, pmark, tri, attr, seg, smark)
+    rows = numbers(la_in)
+    n = int(rows[0][0])
+    in_pts = {(float(r[1]), float(r[2])): int(r[3]) for r in rows[1:n + 1]}
+    index = {tuple(p): i for i, p in enumerate(pts)}
+    wrong = [p for p, k in in_pts.items() if k != 0 and pmark[index[p]] != k]
+    check(not wrong, "la: every input vertex keeps its nonzero marker (%d do not)" % len(wrong))
+    ns = int(rows[n + 1][0])
+    in_seg = {}
+    for r in rows[n + 2:n + 2 + ns]:
+        a, b = (float(rows[int(r[1])][1]), float(rows[int(r[1])][2])), (float(rows[int(r[2])][1]), float(rows[int(r[2])][2]))
+        in_seg[frozenset((a, b))] = int(r[3])
+    mesh_seg = {frozenset((tuple(pts[s[0]]), tuple(pts[s[1]]))): k for s, k in zip(seg, smark)}
+    wrong = [s for s, k in in_seg.items() if mesh_seg.get(s) != (k if k != 0 else mesh_seg.get(s))]
+    check(not wrong, "la: every input segment keeps its marker (%d do not)" % len(wrong))
+    # its six regions have five attributes (two are 0.05)
+    check(set(attr.tolist()) - {0.0} == {0.05, 0.2, 0.4, 0.8, 3.0}, "la: the regions are found")
+else:
+    print("la.poly not found under", SHARED, "- skipped")
+
+if failures:
+    sys.exit("%d check(s) failed" % len(failures))
+print("markers and regions: all checks passed")
