@@ -2,7 +2,7 @@
 //
 //   afmesh_2 INPUT.poly [--size H] [--sources FILE] [--grading G|off]
 //            [--boundary-spacing grow|diffuse]
-//            -o OUT.off [-o OUT.vtu] [-o OUT.svg]
+//            [-o OUT.off] [-o OUT.vtu] [-o OUT.svg] [-o OUT.poly] [--no-output]
 //            [--smooth N] [--svg-color plain|quality] [--histogram OUT.svg]
 //            [--kernel epick|epeck|exact-rational] [--stats] [--report]
 //   afmesh_2 --resume FILE [--checkpoint-every K FILE] [--stats] [--report]
@@ -26,6 +26,9 @@
 // (checkpoints and --resume), input.h (reading, the boundary, the size
 // field), meshing.h (the mesher, streaming, smoothing), output.h (the mesh
 // files), report.h (--report and the JSON of --stats), run.h (one run).
+//
+// Without -o, the mesh goes to INPUT.1.node/.ele/.edge beside the input, as
+// Triangle writes it; --no-output writes nothing.
 //
 // Exit codes: 0 success; 1 invalid input (one line "afmesh_2: error:
 // FILE[:LINE]: what is wrong" on stderr); 2 bad usage; 3 an output or

@@ -41,6 +41,8 @@ struct Options
   std::string boundary_spacing = "grow"; // or "diffuse"; "diffuse" whenever --grading is off
   double gradation = AFM::Poisson_sizing_field_options::default_gradation; // 0: off
   std::vector<std::string> outputs;
+  bool no_output = false;       // --no-output: no mesh file at all
+  bool default_outputs = false; // no -o: INPUT.1.node/.ele/.edge, as Triangle
   std::string kernel = "epick";
   bool stats = false;
   bool report = false;
@@ -140,6 +142,8 @@ inline po::options_description visible_options(Command_line& c)
     ("resume", po::value<std::string>(&opt.resume),
      "FILE: continue the run whose checkpoint is FILE, with the options stored there; only "
      "--checkpoint-every, --stop-after-checkpoint, --time-limit, --max-steps, --stats and --report may be given")
+    ("no-output", po::bool_switch(&opt.no_output),
+     "write no mesh file (without -o, INPUT.1.node/.ele/.edge are written beside the input, as Triangle does)")
     ("stats", po::bool_switch(&opt.stats), "print statistics as one JSON object on stdout")
     ("report", po::bool_switch(&opt.report),
      "print a readable quality summary (on stdout; on stderr with --stats)");
@@ -239,6 +243,18 @@ inline void check_streaming(const Options& opt)
   if(!opt.histogram.empty()) throw Usage_error("--stream cannot be combined with --histogram");
 }
 
+// Without -o, Triangle's names beside the input: INPUT.1.node (with .ele
+// and .edge), INPUT being the input's name without its .poly extension.
+// Streaming needs its outputs named (it checks that before this).
+inline void set_default_outputs(Options& opt)
+{
+  if(!opt.outputs.empty() || opt.no_output || opt.stream || opt.checkpoint_every > 0) return;
+  std::string stem = opt.input;
+  if(ends_with(stem, ".poly")) stem.resize(stem.size() - 5);
+  opt.outputs.push_back(stem + ".1.node");
+  opt.default_outputs = true;
+}
+
 // The options of a new run (not --resume), checked and completed.
 inline void check_new_run(Command_line& c)
 {
@@ -266,7 +282,9 @@ inline void check_new_run(Command_line& c)
   if(opt.kernel != "epick" && opt.kernel != "epeck" && opt.kernel != "exact-rational")
     throw Usage_error("--kernel must be epick, epeck or exact-rational, not '" + opt.kernel + "'");
   check_output_formats(opt);
+  if(opt.no_output && !opt.outputs.empty()) throw Usage_error("--no-output cannot be combined with -o");
   if(!c.checkpoint.empty()) parse_checkpoint(c.checkpoint, opt);
+  set_default_outputs(opt);
   if(opt.stop_after_checkpoint && opt.checkpoint_every == 0)
     throw Usage_error("--stop-after-checkpoint needs --checkpoint-every");
   check_streaming(opt);

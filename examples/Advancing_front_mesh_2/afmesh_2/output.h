@@ -54,6 +54,11 @@ bool write_outputs(const Options& opt, const CDT& cdt, AFM::Markers_and_regions_
       return failed(out, e);
     }
   }
+  if(opt.default_outputs) {
+    const std::string stem = opt.outputs.front().substr(0, opt.outputs.front().size() - 5);
+    std::cerr << program << ": note: no -o given: wrote " << stem << ".node, " << stem << ".ele and " << stem
+              << ".edge, as Triangle does (-o FILE chooses the files and formats, --no-output writes none)\n";
+  }
   if(!opt.histogram.empty()) {
     std::ofstream os(opt.histogram);
     AFM::IO::write_quality_histogram_SVG(os, quality, opt.input);
