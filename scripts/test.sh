@@ -10,7 +10,8 @@
 # installed package (a build test) in the plain Debug build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gmsh
+bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gmsh pybind11-dev python3-numpy \
+  python3-pytest
 jobs=${AFM_JOBS:-2}
 for variant in debug asan; do
   sanitize=OFF models=OFF package=ON

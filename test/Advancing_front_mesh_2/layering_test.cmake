@@ -64,6 +64,7 @@ set(AFM_LAYERS
   "B CGAL/Advancing_front_mesh_2/Mesh_quality.h"
   "B CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h"
   "B CGAL/Advancing_front_mesh_2/Region_sizing_field_2.h"
+  "B CGAL/Advancing_front_mesh_2/Sampled_sizing_field_2.h"
   "B CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h"
   "B CGAL/Advancing_front_mesh_2/Smoothing_statistics.h"
   "B CGAL/Advancing_front_mesh_2/internal/Laplacian_smoother.h"

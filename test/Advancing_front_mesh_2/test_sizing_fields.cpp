@@ -12,6 +12,7 @@
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Region_sizing_field_2.h>
+#include <CGAL/Advancing_front_mesh_2/Sampled_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Sizing_field_mesh_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
 
@@ -503,4 +504,62 @@ AFM_TEST_CASE(test_region_sizing_field_area_limits)
   AFM_CHECK_MSG(left_area / left < 2e-4, "mean area on the left " << left_area / left);
   AFM_CHECK_MSG(right_area / right > 3 * (left_area / left),
                 "the right, without a limit, is not coarser: " << right_area / right << " vs " << left_area / left);
+}
+
+// A field sampled from a function evaluated in bulk: exact at its samples,
+// close to a smooth function everywhere, a few calls on arrays, bad sizes
+// refused with their point, the sample count bounded; a valid mesh from it.
+AFM_TEST_CASE(test_sampled_sizing_field)
+{
+  typedef AFM::Sampled_sizing_field_2<K> Sampled;
+  std::size_t calls = 0, points = 0;
+  auto h = [](double x, double y) { return 0.01 + 0.1 * std::hypot(x - 0.3, y - 0.2); };
+  const Sampled::Bulk_function f = [&](const double* xy, std::size_t n, double* out) {
+    ++calls;
+    points += n;
+    for(std::size_t i = 0; i < n; ++i) out[i] = h(xy[2 * i], xy[2 * i + 1]);
+  };
+  const Sampled field(f, 0, 0, 1, 1);
+  AFM_CHECK(calls == field.number_of_calls() && points == field.number_of_samples());
+  AFM_CHECK_MSG(calls > 3 && calls < 20, calls << " calls");
+  AFM_CHECK(field.at(0, 0) == h(0, 0) && field.at(1, 1) == h(1, 1) && field.at(0.5, 0.5) == h(0.5, 0.5));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst = 0;
+  for(int i = 0; i < 2000; ++i) {
+    const double x = u(rng), y = u(rng);
+    worst = (std::max)(worst, std::abs(field(Point(x, y)) - h(x, y)) / h(x, y));
+  }
+  AFM_CHECK_MSG(worst < 0.05, "relative interpolation error " << worst);
+  AFM_CHECK(field(Point(-3, 0.5)) == field(Point(0, 0.5))); // outside: the nearest point of the box
+
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02);
+  const auto r = mesh_and_check<CDT>(in, field, "square with hole, sampled field");
+  AFM_CHECK_MSG(r.report.n_triangles > field.number_of_samples(),
+                r.report.n_triangles << " triangles from " << field.number_of_samples() << " samples");
+
+  // the number of leaves is bounded, and a bad size names its point
+  const Sampled::Bulk_function tiny = [](const double*, std::size_t n, double* out) {
+    for(std::size_t i = 0; i < n; ++i) out[i] = 1e-12;
+  };
+  AFM_CHECK(Sampled(tiny, 0, 0, 1, 1, 2.0, 1000).number_of_leaves() <= 1000);
+  for(double bad : {0., -1., std::nan(""), HUGE_VAL}) {
+    const Sampled::Bulk_function g = [bad](const double* xy, std::size_t n, double* out) {
+      for(std::size_t i = 0; i < n; ++i) out[i] = xy[2 * i] > 0.7 ? bad : 0.1;
+    };
+    bool thrown = false;
+    try {
+      Sampled(g, 0, 0, 1, 1);
+    } catch(const std::invalid_argument& e) {
+      thrown = std::string(e.what()).find("the size function returned") != std::string::npos;
+    }
+    AFM_CHECK_MSG(thrown, "size " << bad << " accepted");
+  }
+  bool thrown = false;
+  try {
+    Sampled(f, 0, 0, 0, 1);
+  } catch(const std::invalid_argument&) {
+    thrown = true;
+  }
+  AFM_CHECK(thrown);
 }

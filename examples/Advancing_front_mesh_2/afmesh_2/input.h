@@ -12,6 +12,7 @@
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Region_sizing_field_2.h>
+#include <CGAL/Advancing_front_mesh_2/Sampled_sizing_field_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -45,16 +46,19 @@ struct Types
     K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag> CDT;
 };
 
-// Either a uniform size or a background field, so that one mesher type
-// serves both.
+// A uniform size, a background field, or (from the Python module) a field
+// sampled from a function, so that one mesher type serves all.
 template <class K>
 struct Cli_base_sizing_field
 {
   typedef AFM::Poisson_sizing_field_2<K> Background;
+  typedef AFM::Sampled_sizing_field_2<K> Sampled;
   double uniform = 0;
   std::shared_ptr<const Background> background;
+  std::shared_ptr<const Sampled> sampled;
   typename K::FT operator()(const typename K::Point_2& p) const
   {
+    if(sampled) return (*sampled)(p);
     return background ? (*background)(p) : typename K::FT(uniform);
   }
 };
@@ -132,11 +136,10 @@ std::vector<AFM::Size_source_2<K> > read_sources(const Options& opt)
 }
 
 template <class K>
-void make_base_size_field(const Options& opt, Input<K>& in)
+void make_base_size_field(const Options& opt, Input<K>& in, const std::vector<AFM::Size_source_2<K> >& sources)
 {
   in.sizing.base.uniform = opt.size;
-  if(opt.has_size && opt.sources.empty()) return;
-  const std::vector<AFM::Size_source_2<K> > sources = read_sources<K>(opt);
+  if(opt.has_size && sources.empty()) return;
   std::vector<std::pair<typename K::Point_2, typename K::FT> > spacing;
   AFM::boundary_spacing_2(in.cdt, std::back_inserter(spacing));
   if(spacing.empty() && sources.empty())
@@ -150,17 +153,31 @@ void make_base_size_field(const Options& opt, Input<K>& in)
   in.sizing.base.background = std::make_shared<AFM::Poisson_sizing_field_2<K> >(spacing, sources, field_options);
 }
 
+// The area limits of the regions, on whatever base field `in` has.
+template <class K>
+void limit_size_in_regions(Input<K>& in)
+{
+  if(in.tags.has_area_limits())
+    in.sizing.regions =
+      std::make_shared<typename Cli_sizing_field<K>::Region_field>(in.cdt, in.tags, in.sizing.base);
+}
+
 // --size alone: uniform; otherwise the background field of the boundary
 // spacing (grown, or diffused with --boundary-spacing diffuse) and the
 // sources (diffused), bounded above by --size when given. Either is then
 // bounded in the regions that have an area limit.
 template <class K>
+void make_size_field(const Options& opt, Input<K>& in, const std::vector<AFM::Size_source_2<K> >& sources)
+{
+  make_base_size_field(opt, in, sources);
+  limit_size_in_regions(in);
+}
+
+// The size field of a run from files: the sources of --sources.
+template <class K>
 void make_size_field(const Options& opt, Input<K>& in)
 {
-  make_base_size_field(opt, in);
-  if(in.tags.has_area_limits())
-    in.sizing.regions =
-      std::make_shared<typename Cli_sizing_field<K>::Region_field>(in.cdt, in.tags, in.sizing.base);
+  make_size_field(opt, in, read_sources<K>(opt));
 }
 
 } // namespace afmesh_2
