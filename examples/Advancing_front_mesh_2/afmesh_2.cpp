@@ -27,6 +27,9 @@
 // field), meshing.h (the mesher, streaming, smoothing), output.h (the mesh
 // files), report.h (--report and the JSON of --stats), run.h (one run).
 //
+// INPUT is a .poly file, or polygons with holes in WKT (.wkt) or GeoJSON
+// (.geojson, .json).
+//
 // Without -o, the mesh goes to INPUT.1.node/.ele/.edge beside the input, as
 // Triangle writes it; --no-output writes nothing.
 //

@@ -13,30 +13,17 @@ and with the input.
 usage: check_markers_and_regions.py AFMESH MAKE_INPUT CHECK WORK_DIR [SHARED_DATA_DIR]
 """
 import os
-import subprocess
 import sys
 
 import gmsh
 import meshio
 import numpy as np
 
+from cli_checks import check, finish, run
+
 AFMESH, MAKE_INPUT, CHECK, WORK = sys.argv[1:5]
 SHARED = sys.argv[5] if len(sys.argv) > 5 else ""
 os.makedirs(WORK, exist_ok=True)
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAILED:", what)
-
-
-def run(*args):
-    r = subprocess.run(list(args), capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit("command failed (%d): %s\n%s%s" % (r.returncode, " ".join(args), r.stdout, r.stderr))
-    return r
 
 
 def numbers(path):
@@ -235,6 +222,4 @@ if SHARED and os.path.exists(la_in):
 else:
     print("la.poly not found under", SHARED, "- skipped")
 
-if failures:
-    sys.exit("%d check(s) failed" % len(failures))
-print("markers and regions: all checks passed")
+finish("markers and regions")

@@ -12,6 +12,7 @@
 
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_WKT_polygons.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
@@ -758,6 +759,44 @@ AFM_TEST_CASE(test_io_markers_and_regions_rules)
     }
   }
   AFM_CHECK(left == 2 && right == 2);
+}
+
+// Polygons from WKT: the rings become closed chains, each hole gets a seed
+// outside the islands it holds, and bad lines are named.
+AFM_TEST_CASE(test_io_read_WKT_polygons)
+{
+  std::istringstream in("# a square with a hole holding an island\n\n"
+                        "POLYGON((0 0,4 0,4 4,0 4,0 0),(1 1,1 3,3 3,3 1,1 1))\n"
+                        "MULTIPOLYGON(((1.5 1.5,2.5 1.5,2.5 2.5,1.5 2.5,1.5 1.5)),((5 0,6 0,6 1,5 0)))\n");
+  const afm_io::Poly_data d = afm_io::read_WKT_polygons(in, "w.wkt");
+  AFM_CHECK(d.points.size() == 15 && d.segments.size() == 15);
+  AFM_CHECK(d.origin.segment_lines.size() == 15 && d.origin.segment_lines[0] == 3 && d.origin.segment_lines[14] == 4);
+  AFM_CHECK_MSG(d.holes.size() == 1, d.holes.size());
+  const double hx = d.holes[0][0], hy = d.holes[0][1];
+  AFM_CHECK_MSG(hx > 1 && hx < 3 && hy > 1 && hy < 3 && !(hx >= 1.5 && hx <= 2.5 && hy >= 1.5 && hy <= 2.5),
+                hx << " " << hy);
+  CDT cdt;
+  afm_io::insert_poly(cdt, d);
+  double area = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain()) area += CGAL::to_double(cdt.triangle(f).area());
+  AFM_CHECK_MSG(area == 16 - 4 + 1 + 0.5, area);
+
+  const std::vector<std::pair<std::string, std::string> > bad = {
+    {"POINT(1 1)\n", "w.wkt:1: expected a WKT POLYGON or MULTIPOLYGON, found 'POINT'"},
+    {"\nPOLYGON((0 0,1 0,1 1)\n", "w.wkt:2: not a valid WKT polygon"},
+    {"POLYGON((0 0,1 0,1 0,0 0))\n", "w.wkt:1: polygon 1: ring 1 has fewer than 3 distinct points"},
+    {"# nothing\n", "w.wkt: no POLYGON or MULTIPOLYGON in the file"}};
+  for(const auto& b : bad) {
+    std::istringstream bin(b.first);
+    std::string message;
+    try {
+      afm_io::read_WKT_polygons(bin, "w.wkt");
+    } catch(const afm_io::Poly_read_error& e) {
+      message = e.what();
+    }
+    AFM_CHECK_MSG(message.compare(0, b.second.size(), b.second) == 0, b.first << ": " << message);
+  }
 }
 
 AFM_TEST_CASE(test_io_write_svg)

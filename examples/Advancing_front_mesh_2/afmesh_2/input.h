@@ -3,10 +3,12 @@
 #ifndef AFMESH_2_INPUT_H
 #define AFMESH_2_INPUT_H
 
+#include "geojson.h"
 #include "options.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_WKT_polygons.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
@@ -93,9 +95,12 @@ struct Input
   Input_times times;
 };
 
+// A .poly file; polygons from WKT (.wkt) or GeoJSON (.geojson, .json).
 inline AFM::IO::Poly_data read_input(const std::string& file)
 {
   try {
+    if(ends_with(file, ".wkt") || ends_with(file, ".WKT")) return AFM::IO::read_WKT_polygons(file);
+    if(ends_with(file, ".geojson") || ends_with(file, ".json") || ends_with(file, ".GEOJSON")) return read_geojson(file);
     return AFM::IO::read_poly(file);
   } catch(const AFM::IO::Poly_read_error& e) {
     throw Input_error(e.what());

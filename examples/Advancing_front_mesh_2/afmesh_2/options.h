@@ -91,8 +91,9 @@ inline bool ends_with(const std::string& s, const std::string& tail)
 inline po::options_description visible_options(Command_line& c)
 {
   Options& opt = c.opt;
-  po::options_description visible("Usage: afmesh_2 INPUT.poly [--size H] [--sources FILE] -o OUT [-o OUT ...] [options]\n\n"
-                                  "Meshes the domain of a Triangle .poly file with the advancing-front\n"
+  po::options_description visible("Usage: afmesh_2 INPUT [--size H] [--sources FILE] [-o OUT ...] [options]\n\n"
+                                  "Meshes the domain of INPUT (a Triangle .poly file, or polygons with holes in\n"
+                                  "WKT .wkt or GeoJSON .geojson) with the advancing-front\n"
                                   "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
                                   "length is uniform; otherwise it comes from a background field on a quadtree:\n"
                                   "the point sources diffused by a Poisson solve, the boundary spacing grown from\n"
