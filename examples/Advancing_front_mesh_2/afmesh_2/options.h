@@ -52,6 +52,7 @@ struct Options
   std::size_t smooth = 0;
   std::string smoother = "quality"; // or "laplacian"
   std::string svg_color = "plain";
+  std::vector<double> svg_window; // --svg-window X0 Y0 X1 Y1, or empty
   std::string histogram;
   bool stream = false;
   std::size_t checkpoint_every = 0; // triangles, 0: no checkpoints
@@ -68,19 +69,22 @@ struct Command_line
   Options opt;
   long long smooth = 0, max_steps = 0;
   std::vector<std::string> checkpoint; // --checkpoint-every K FILE
+  std::vector<std::string> svg_window; // --svg-window X0 Y0 X1 Y1
   po::variables_map vm;
   po::parsed_options parsed{nullptr};
 };
 
 // An option taking exactly two values (K FILE): a multitoken option would
 // also take the input file given after them.
-class Two_tokens : public po::typed_value<std::vector<std::string> >
+template <unsigned N>
+class Exact_tokens : public po::typed_value<std::vector<std::string> >
 {
 public:
-  explicit Two_tokens(std::vector<std::string>* store) : po::typed_value<std::vector<std::string> >(store) {}
-  unsigned min_tokens() const override { return 2; }
-  unsigned max_tokens() const override { return 2; }
+  explicit Exact_tokens(std::vector<std::string>* store) : po::typed_value<std::vector<std::string> >(store) {}
+  unsigned min_tokens() const override { return N; }
+  unsigned max_tokens() const override { return N; }
 };
+typedef Exact_tokens<2> Two_tokens;
 
 inline bool ends_with(const std::string& s, const std::string& tail)
 {
@@ -122,7 +126,9 @@ inline po::options_description visible_options(Command_line& c)
      "with --smooth: 'quality' (default), the best of Laplacian and optimal-Delaunay moves for each "
      "vertex's triangles, or 'laplacian', the paper's (Fig. 13)")
     ("svg-color", po::value<std::string>(&opt.svg_color)->default_value("plain"),
-     "SVG outputs: 'plain', or 'quality' to colour triangles by radius ratio")
+     "SVG outputs: 'plain', or 'quality' to colour triangles by radius ratio (with a key)")
+    ("svg-window", new Exact_tokens<4>(&c.svg_window),
+     "X0 Y0 X1 Y1: SVG outputs show only this window of the mesh (a close-up)")
     ("histogram", po::value<std::string>(&opt.histogram), "write the quality histograms as SVG to this file")
     ("no-pocket-priority", po::bool_switch(&opt.no_pocket_priority),
      "mesh the front's pockets in shortest-first order too: a little better quality "
@@ -256,6 +262,25 @@ inline void set_default_outputs(Options& opt)
   opt.default_outputs = true;
 }
 
+// --svg-window X0 Y0 X1 Y1: four numbers, X0 < X1 and Y0 < Y1.
+inline void parse_svg_window(const std::vector<std::string>& values, Options& opt)
+{
+  if(values.empty()) return;
+  for(const std::string& v : values) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(v, &used);
+    } catch(const std::exception&) {
+      used = 0;
+    }
+    if(used != v.size() || !std::isfinite(x)) throw Usage_error("--svg-window takes four numbers, not '" + v + "'");
+    opt.svg_window.push_back(x);
+  }
+  if(!(opt.svg_window[0] < opt.svg_window[2]) || !(opt.svg_window[1] < opt.svg_window[3]))
+    throw Usage_error("--svg-window X0 Y0 X1 Y1 needs X0 < X1 and Y0 < Y1");
+}
+
 // The options of a new run (not --resume), checked and completed.
 inline void check_new_run(Command_line& c)
 {
@@ -273,6 +298,7 @@ inline void check_new_run(Command_line& c)
   opt.max_steps = std::size_t(c.max_steps);
   if(opt.svg_color != "plain" && opt.svg_color != "quality")
     throw Usage_error("--svg-color must be plain or quality, not '" + opt.svg_color + "'");
+  parse_svg_window(c.svg_window, opt);
   opt.gradation = parse_grading(opt.grading);
   if(opt.boundary_spacing != "grow" && opt.boundary_spacing != "diffuse")
     throw Usage_error("--boundary-spacing must be grow or diffuse, not '" + opt.boundary_spacing + "'");

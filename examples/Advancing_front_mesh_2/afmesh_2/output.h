@@ -30,6 +30,13 @@ void write_output(const Options& opt, const std::string& out, const CDT& cdt,
   AFM::IO::SVG_options svg;
   svg.title = opt.input;
   svg.color_by_quality = opt.svg_color == "quality";
+  if(!opt.svg_window.empty()) {
+    svg.has_window = true;
+    svg.xmin = opt.svg_window[0];
+    svg.ymin = opt.svg_window[1];
+    svg.xmax = opt.svg_window[2];
+    svg.ymax = opt.svg_window[3];
+  }
   AFM::IO::write_SVG(os, cdt, svg);
   os.close();
   if(os.fail()) throw std::runtime_error("cannot write " + out);

@@ -58,8 +58,9 @@ struct SVG_options
   double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
   /// when `true`, triangles are filled by their radius ratio 2r/R: dark red
   /// below 0.3, red below 0.5, orange below 0.7, yellow below 0.8, light
-  /// green below 0.9, green below 0.95, pale blue from 0.95 (equilateral);
-  /// one path element per colour keeps large meshes fast to write and view
+  /// green below 0.9, green below 0.95, pale blue from 0.95 (equilateral),
+  /// with a key to the colours in the top left corner; one path element
+  /// per colour keeps large meshes fast to write and view
   bool color_by_quality = false;
 };
 
@@ -288,6 +289,31 @@ void svg_write_quality_fill(std::ostream& os, const Mesh_domain_view<CDT>& m,
   }
 }
 
+// The key to the quality colours, in the top left corner above the mesh: a
+// white box with one swatch and range per colour, scaled with the picture.
+inline void svg_write_quality_legend(std::ostream& os, const Svg_frame& f)
+{
+  static const char* const colour[7] = {"#7f0000", "#e31a1c", "#fd8d3c", "#fed976",
+                                        "#c7e9a0", "#74c476", "#d4e8f5"};
+  static const char* const range[7] = {"below 0.3", "0.3 - 0.5", "0.5 - 0.7", "0.7 - 0.8",
+                                       "0.8 - 0.9", "0.9 - 0.95", "0.95 - 1"};
+  const double u = (std::max)(8., f.width / 70); // one text line
+  os << "<g font-family=\"sans-serif\" font-size=\"" << svg_number(0.8 * u) << "\">\n"
+     << "<rect x=\"" << svg_number(0.5 * u) << "\" y=\"" << svg_number(0.5 * u) << "\" width=\"" << svg_number(7.5 * u)
+     << "\" height=\"" << svg_number(9.2 * u) << "\" fill=\"#ffffff\" fill-opacity=\"0.9\" stroke=\"#000000\" "
+     << "stroke-width=\"" << svg_number(0.05 * u) << "\"/>\n"
+     << "<text x=\"" << svg_number(u) << "\" y=\"" << svg_number(1.6 * u) << "\">radius ratio 2r/R</text>\n";
+  for(int k = 6; k >= 0; --k) {
+    const double y = (2.2 + (6 - k)) * u;
+    os << "<rect x=\"" << svg_number(u) << "\" y=\"" << svg_number(y) << "\" width=\"" << svg_number(1.4 * u)
+       << "\" height=\"" << svg_number(0.8 * u) << "\" fill=\"" << colour[k] << "\" stroke=\"#000000\" stroke-width=\""
+       << svg_number(0.03 * u) << "\"/>\n"
+       << "<text x=\"" << svg_number(2.8 * u) << "\" y=\"" << svg_number(y + 0.75 * u) << "\">" << range[k]
+       << "</text>\n";
+  }
+  os << "</g>\n";
+}
+
 inline void svg_write_edge_layer(std::ostream& os,
                                  const std::vector<std::array<double, 2> >& pts,
                                  const std::vector<std::array<std::size_t, 2> >& edges,
@@ -358,6 +384,8 @@ void write_SVG(std::ostream& os, const CDT& cdt,
     internal::svg_write_quality_fill(os, m, frame);
   internal::svg_write_edge_layer(os, m.points, edges.thin, "#6f88a6", thin_w, frame);
   internal::svg_write_edge_layer(os, m.points, edges.thick, "#000000", thick_w, frame);
+  if(options.color_by_quality)
+    internal::svg_write_quality_legend(os, frame);
   os << "</svg>\n";
 }
 
