@@ -210,17 +210,23 @@ inline void check_limits(const Command_line& c)
   if(c.vm.count("max-steps") && c.max_steps < 1) throw Usage_error("--max-steps must be a positive count");
 }
 
+// Whether `text` is a whole finite number, stored in `value`.
+inline bool parse_finite_number(const std::string& text, double& value)
+{
+  std::size_t used = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch(const std::exception&) {
+    return false;
+  }
+  return used == text.size() && std::isfinite(value);
+}
+
 inline double parse_grading(const std::string& grading)
 {
   if(grading == "off") return 0;
-  std::size_t used = 0;
   double g = 0;
-  try {
-    g = std::stod(grading, &used);
-  } catch(const std::exception&) {
-    used = 0;
-  }
-  if(used != grading.size() || !(g > 0) || !std::isfinite(g))
+  if(!parse_finite_number(grading, g) || !(g > 0))
     throw Usage_error("--grading must be a positive number or 'off', not '" + grading + "'");
   return g;
 }
@@ -267,14 +273,8 @@ inline void parse_svg_window(const std::vector<std::string>& values, Options& op
 {
   if(values.empty()) return;
   for(const std::string& v : values) {
-    std::size_t used = 0;
     double x = 0;
-    try {
-      x = std::stod(v, &used);
-    } catch(const std::exception&) {
-      used = 0;
-    }
-    if(used != v.size() || !std::isfinite(x)) throw Usage_error("--svg-window takes four numbers, not '" + v + "'");
+    if(!parse_finite_number(v, x)) throw Usage_error("--svg-window takes four numbers, not '" + v + "'");
     opt.svg_window.push_back(x);
   }
   if(!(opt.svg_window[0] < opt.svg_window[2]) || !(opt.svg_window[1] < opt.svg_window[3]))
