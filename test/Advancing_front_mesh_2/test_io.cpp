@@ -884,9 +884,14 @@ AFM_TEST_CASE(test_io_write_mesh_by_extension)
   afm_io::write_mesh(temp_path("out.VTU"), cdt);
   const std::string vtu = read_text(temp_path("out.VTU"));
   AFM_CHECK(vtu.find("<VTKFile") != std::string::npos);
-  // Well-formed XML to the end (CGAL's binary mode would leave a tag open).
+  // Well-formed XML to the end, the arrays binary by default (raw appended)
   AFM_CHECK(vtu.size() > 12 && vtu.compare(vtu.size() - 11, 11, "</VTKFile>\n") == 0);
-  AFM_CHECK(vtu.find("AppendedData") == std::string::npos);
+  AFM_CHECK(vtu.find("<AppendedData encoding=\"raw\">\n_") != std::string::npos);
+  AFM_CHECK(vtu.find("format=\"ascii\"") == std::string::npos);
+  afm_io::write_mesh(temp_path("out_ascii.vtu"), cdt, CGAL::parameters::use_binary_mode(false));
+  const std::string ascii = read_text(temp_path("out_ascii.vtu"));
+  AFM_CHECK(ascii.find("AppendedData") == std::string::npos && ascii.find("format=\"ascii\"") != std::string::npos);
+  AFM_CHECK(ascii.compare(ascii.size() - 11, 11, "</VTKFile>\n") == 0);
   // The triangles only, and only the vertices they use (the streamed VTU
   // holds the same); the segments come as line cells with the markers.
   AFM_CHECK(vtu.find("NumberOfPoints=\"" + std::to_string(cdt.number_of_vertices()) + "\" NumberOfCells=\"" +

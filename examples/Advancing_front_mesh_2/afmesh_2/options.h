@@ -55,6 +55,7 @@ struct Options
   std::vector<double> svg_window; // --svg-window X0 Y0 X1 Y1, or empty
   std::string histogram;
   bool stream = false;
+  bool vtu_ascii = false;
   std::size_t checkpoint_every = 0; // triangles, 0: no checkpoints
   std::string checkpoint_file;
   bool stop_after_checkpoint = false;
@@ -118,6 +119,8 @@ inline po::options_description visible_options(Command_line& c)
     ("output,o", po::value<std::vector<std::string> >(&opt.outputs),
      "output file, format chosen by extension: .off .vtu .node/.ele (with .edge) .poly (the boundary) .msh .svg "
      "(repeatable)")
+    ("vtu-ascii", po::bool_switch(&opt.vtu_ascii),
+     ".vtu outputs in ASCII (default: binary, raw appended arrays, which VTK, ParaView and meshio read)")
     ("kernel", po::value<std::string>(&opt.kernel)->default_value("epick"),
      "CGAL kernel: epick (default), epeck or exact-rational")
     ("smooth", po::value<long long>(&c.smooth)->default_value(0),

@@ -23,7 +23,7 @@ void write_output(const Options& opt, const std::string& out, const CDT& cdt,
                   const AFM::Markers_and_regions_2<CDT>& tags)
 {
   if(!ends_with(out, ".svg")) {
-    AFM::IO::write_mesh(out, cdt, tags);
+    AFM::IO::write_mesh(out, cdt, tags, CGAL::parameters::use_binary_mode(!opt.vtu_ascii));
     return;
   }
   std::ofstream os(out);
