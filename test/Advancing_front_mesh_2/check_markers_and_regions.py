@@ -4,11 +4,12 @@
 afmesh_2 meshes a multi-region input made by our own afm_make_input
 (tagged-regions: three regions, segment and vertex markers, area limits)
 and Triangle's la.poly from the shared data (its markers and regions),
-writing .node/.ele/.edge, .msh, .vtu and the boundary .poly. Every mesh is
-checked by the independent validity checker; the markers and regions are
-read back with our own parser of Triangle's files, with meshio (.msh and
-.vtu) and with Gmsh's own Python API (.msh), and must agree with each other
-and with the input.
+writing .node/.ele/.edge, .msh, .vtu and the boundary .poly, in memory and
+streamed (--stream), the VTU binary and ASCII. Every mesh is checked by the
+independent validity checker; the markers and regions are read back with
+our own parser of Triangle's files, with meshio (.msh and .vtu) and with
+Gmsh's own Python API (.msh), and must agree with each other, between the
+in-memory and the streamed run, and with the input.
 
 usage: check_markers_and_regions.py AFMESH MAKE_INPUT CHECK WORK_DIR [SHARED_DATA_DIR]
 """
@@ -119,6 +120,43 @@ def check_formats_agree(base, pts, pmark, tri, attr, seg, smark):
         gmsh.finalize()
 
 
+def tagged_geometry(pts, pmark, tri, attr, seg, smark):
+    """The tags keyed by coordinates, independent of the numbering."""
+    t = {tuple(sorted(map(tuple, pts[x]))): (None if attr is None else float(a))
+         for x, a in zip(tri, attr if attr is not None else [None] * len(tri))}
+    s = {frozenset(map(tuple, pts[x])): int(k) for x, k in zip(seg, smark)}
+    p = {tuple(q): int(k) for q, k in zip(pts, pmark)}
+    return t, s, p
+
+
+def check_streamed_like_in_memory(input_file, base, extra_args):
+    """--stream writes the same mesh with the same tags as the in-memory run, in every format, binary and
+    ASCII VTU alike."""
+    st = base + "_st"
+    run(AFMESH, input_file, *extra_args, "--stream", "-o", st + ".node", "-o", st + ".msh", "-o", st + ".vtu",
+        "-o", st + ".off")
+    run(CHECK, input_file, st + ".off")
+    streamed = read_triangle(st)
+    check_formats_agree(st, *streamed)
+    a, b = tagged_geometry(*read_triangle(base)), tagged_geometry(*streamed)
+    check(a[0] == b[0], base + ": streamed triangles and region attributes = in memory")
+    check(a[1] == b[1], base + ": streamed segments and markers = in memory")
+    check(a[2] == b[2], base + ": streamed vertex markers = in memory")
+    # ASCII VTU on request, the same arrays as the binary default
+    run(AFMESH, input_file, *extra_args, "--vtu-ascii", "-o", base + "_ascii.vtu")
+    with open(base + ".vtu", "rb") as f:
+        check(b'<AppendedData encoding="raw">' in f.read(), base + ".vtu is binary (raw appended) by default")
+    with open(base + "_ascii.vtu", "rb") as f:
+        text = f.read()
+        check(b"AppendedData" not in text and b'format="ascii"' in text, base + "_ascii.vtu is ASCII")
+    x, y = meshio.read(base + ".vtu"), meshio.read(base + "_ascii.vtu")
+    check(np.array_equal(x.points, y.points) and all(np.array_equal(x.cells_dict[k], y.cells_dict[k])
+                                                     for k in x.cells_dict), base + ": ASCII VTU = binary VTU")
+    check(all(np.array_equal(x.point_data[k], y.point_data[k]) for k in x.point_data) and
+          all(np.array_equal(u, v) for k in x.cell_data for u, v in zip(x.cell_data[k], y.cell_data[k])),
+          base + ": ASCII VTU data = binary VTU data")
+
+
 def inside(p, polygon):
     """Even-odd rule, for points off the polygon's boundary."""
     x, y = p
@@ -144,6 +182,7 @@ run(CHECK, tr + ".poly", tr + ".off")
 pts, pmark, tri, attr, seg, smark = read_triangle(tr)
 check(attr is not None, "tr.ele has the region attribute")
 check_formats_agree(tr, pts, pmark, tri, attr, seg, smark)
+check_streamed_like_in_memory(tr + ".poly", tr, ["--size", "0.05"])
 
 # the region of each triangle, from the geometry: left of x = 1 is region 1,
 # inside the inclusion (the polygon of the marker-6 segments) region 3, else 2
@@ -203,6 +242,7 @@ if SHARED and os.path.exists(la_in):
     run(CHECK, la_in, la + ".off")
     pts, pmark, tri, attr, seg, smark = read_triangle(la)
     check_formats_agree(la, pts, pmark, tri, attr, seg, smark)
+    check_streamed_like_in_memory(la_in, la, [])
     rows = numbers(la_in)
     n = int(rows[0][0])
     in_pts = {(float(r[1]), float(r[2])): int(r[3]) for r in rows[1:n + 1]}

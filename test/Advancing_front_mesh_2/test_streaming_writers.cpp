@@ -33,6 +33,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -158,6 +159,12 @@ struct Test_mesh
   std::vector<std::array<double, 2> > points;
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<Event> events;
+  // tags, when `markers` is not empty: a marker per vertex, an attribute per
+  // triangle (empty: no regions), segments with their markers
+  std::vector<int> markers;
+  std::vector<double> attributes;
+  std::vector<std::array<std::size_t, 2> > segments;
+  std::vector<int> segment_markers;
 
   // the bounding box, updated as write_gmsh_msh() does
   std::array<double, 4> bbox() const
@@ -222,11 +229,15 @@ void stream(afm_io::Streaming_mesh_writer<P>& w, const Test_mesh& m,
 {
   for(std::size_t e = from; e < to; ++e) {
     const Event& ev = m.events[e];
+    const bool tagged = !m.markers.empty();
     if(ev.is_vertex) {
-      w.add_vertex(ev.index, P(m.points[ev.index][0], m.points[ev.index][1]));
+      const P p(m.points[ev.index][0], m.points[ev.index][1]);
+      if(tagged) w.add_vertex(ev.index, p, m.markers[ev.index]);
+      else w.add_vertex(ev.index, p);
     } else {
       const std::array<std::size_t, 3>& t = m.triangles[ev.index];
-      w.add_triangle(t[0], t[1], t[2]);
+      if(!m.attributes.empty()) w.add_triangle(t[0], t[1], t[2], m.attributes[ev.index]);
+      else w.add_triangle(t[0], t[1], t[2]);
     }
   }
 }
@@ -353,20 +364,81 @@ void check_msh(const std::string& path, const Test_mesh& m)
   AFM_CHECK(k == l.size());
 }
 
-// The text of the DataArray whose opening tag contains `key`.
-std::string vtu_array(const std::string& text, const std::string& key)
+// The arrays of a VTU file in our layout, ASCII or raw appended binary,
+// keyed "points", "connectivity", "offsets", "types", "point marker",
+// "cell marker", "region"; Float64 arrays as doubles (bit for bit),
+// integers as int64. The layout is checked on the way.
+struct Vtu_arrays
 {
-  const std::size_t a = text.find(key);
-  AFM_CHECK_MSG(a != std::string::npos, "no DataArray with " << key);
-  const std::size_t open = text.rfind("<DataArray", a);
-  const std::size_t b = text.find('>', a);
-  const std::size_t e = text.find("</DataArray>", b);
-  AFM_CHECK(open != std::string::npos && b != std::string::npos && e != std::string::npos);
-  AFM_CHECK_MSG(text.find('<', b) == e, "markup inside the DataArray with " << key);
-  return text.substr(b + 1, e - b - 1);
+  bool binary = false;
+  std::map<std::string, std::vector<double> > reals;
+  std::map<std::string, std::vector<std::int64_t> > integers;
+};
+
+std::string xml_attribute(const std::string& tag, const std::string& name)
+{
+  const std::size_t a = tag.find(" " + name + "=\"");
+  if(a == std::string::npos) return std::string();
+  const std::size_t b = a + name.size() + 3;
+  return tag.substr(b, tag.find('"', b) - b);
 }
 
-void check_vtu(const std::string& path, const Test_mesh& m)
+Vtu_arrays read_vtu_arrays(const std::string& text)
+{
+  Vtu_arrays r;
+  const std::size_t appended = text.find("<AppendedData encoding=\"raw\">\n_");
+  r.binary = appended != std::string::npos;
+  const std::size_t data = appended + std::strlen("<AppendedData encoding=\"raw\">\n_");
+  std::string section;
+  for(std::size_t p = text.find('<'); p != std::string::npos && (!r.binary || p < appended);
+      p = text.find('<', p + 1)) {
+    const std::size_t q = text.find('>', p);
+    const std::string tag = text.substr(p, q - p + 1);
+    for(const char* s : {"<Points", "<Cells", "<PointData", "<CellData"})
+      if(tag.compare(0, std::strlen(s), s) == 0) section = s + 1;
+    if(tag.compare(0, 10, "<DataArray") != 0) continue;
+    const std::string type = xml_attribute(tag, "type"), name = xml_attribute(tag, "Name");
+    std::string key = section == "Points" ? "points" : name;
+    if(section == "PointData") key = "point " + name;
+    if(section == "CellData" && name == "marker") key = "cell marker";
+    const std::size_t width = type == "Float64" || type == "Int64" ? 8 : type == "Int32" ? 4 : 1;
+    AFM_CHECK_MSG(type == "Float64" || type == "Int64" || type == "Int32" || type == "UInt8", "type " << type);
+    if(r.binary) {
+      AFM_CHECK_MSG(xml_attribute(tag, "format") == "appended" && tag.compare(tag.size() - 2, 2, "/>") == 0, tag);
+      const std::size_t at = data + std::size_t(to_uint(xml_attribute(tag, "offset")));
+      AFM_CHECK(at + 8 <= text.size());
+      std::uint64_t bytes = 0;
+      std::memcpy(&bytes, text.data() + at, 8);
+      AFM_CHECK_MSG(bytes % width == 0 && at + 8 + bytes <= text.size(), key << ": " << bytes << " bytes");
+      for(std::size_t i = 0; i < bytes; i += width) {
+        const char* v = text.data() + at + 8 + i;
+        if(type == "Float64") { double d; std::memcpy(&d, v, 8); r.reals[key].push_back(d); }
+        else if(type == "Int64") { std::int64_t k; std::memcpy(&k, v, 8); r.integers[key].push_back(k); }
+        else if(type == "Int32") { std::int32_t k; std::memcpy(&k, v, 4); r.integers[key].push_back(k); }
+        else r.integers[key].push_back(static_cast<unsigned char>(*v));
+      }
+      r.reals[key];
+      r.integers[key];
+    } else {
+      AFM_CHECK_MSG(xml_attribute(tag, "format") == "ascii", tag);
+      const std::size_t e = text.find("</DataArray>", q);
+      AFM_CHECK_MSG(text.find('<', q) == e, "markup inside the DataArray " << key);
+      r.reals[key];
+      r.integers[key];
+      for(const std::string& t : tokens(text.substr(q + 1, e - q - 1))) {
+        if(type == "Float64") r.reals[key].push_back(to_double(t));
+        else r.integers[key].push_back(std::stoll(t));
+      }
+    }
+  }
+  if(r.binary) {
+    const std::string tail = "\n</AppendedData>\n</VTKFile>\n";
+    AFM_CHECK(text.compare(text.size() - tail.size(), tail.size(), tail) == 0);
+  }
+  return r;
+}
+
+void check_vtu(const std::string& path, const Test_mesh& m, bool binary = true)
 {
   const std::string text = read_text(path);
   const std::size_t nv = m.points.size(), nt = m.triangles.size();
@@ -376,9 +448,11 @@ void check_vtu(const std::string& path, const Test_mesh& m)
   AFM_CHECK(text.find("NumberOfCells=\"" + std::to_string(nt) + "\"") != std::string::npos);
   const std::size_t tail = text.size() - std::strlen("</VTKFile>\n");
   AFM_CHECK(text.size() > 11 && text.compare(tail, std::string::npos, "</VTKFile>\n") == 0);
-  // every element opened is closed, in order
+  // every element opened is closed, in order (the raw data is not markup)
+  const std::size_t end_of_markup = binary ? text.find("<AppendedData") : text.size();
+  AFM_CHECK(end_of_markup != std::string::npos);
   std::vector<std::string> stack;
-  for(std::size_t p = text.find('<'); p != std::string::npos; p = text.find('<', p + 1)) {
+  for(std::size_t p = text.find('<'); p < end_of_markup; p = text.find('<', p + 1)) {
     const std::size_t q = text.find('>', p);
     AFM_CHECK(q != std::string::npos);
     const std::string tag = text.substr(p + 1, q - p - 1);
@@ -391,23 +465,26 @@ void check_vtu(const std::string& path, const Test_mesh& m)
       stack.push_back(tag.substr(0, tag.find(' ')));
     }
   }
-  AFM_CHECK(stack.empty());
+  AFM_CHECK(binary ? stack == std::vector<std::string>{"VTKFile"} : stack.empty());
 
-  const std::vector<std::string> pts = tokens(vtu_array(text, "NumberOfComponents=\"3\""));
+  const Vtu_arrays a = read_vtu_arrays(text);
+  AFM_CHECK(a.binary == binary);
+  const std::vector<double>& pts = a.reals.at("points");
   AFM_CHECK(pts.size() == 3 * nv);
   for(std::size_t i = 0; i < nv; ++i) {
-    check_point(m, i, pts[3 * i], pts[3 * i + 1], path);
-    AFM_CHECK(pts[3 * i + 2] == "0");
+    AFM_CHECK_MSG(same_bits(pts[3 * i], m.points[i][0]) && same_bits(pts[3 * i + 1], m.points[i][1]),
+                  path << ": vertex " << i);
+    AFM_CHECK(pts[3 * i + 2] == 0);
   }
-  const std::vector<std::string> conn = tokens(vtu_array(text, "Name=\"connectivity\""));
-  const std::vector<std::string> offsets = tokens(vtu_array(text, "Name=\"offsets\""));
-  const std::vector<std::string> types = tokens(vtu_array(text, "Name=\"types\""));
+  const std::vector<std::int64_t>& conn = a.integers.at("connectivity");
+  const std::vector<std::int64_t>& offsets = a.integers.at("offsets");
+  const std::vector<std::int64_t>& types = a.integers.at("types");
   AFM_CHECK(conn.size() == 3 * nt && offsets.size() == nt && types.size() == nt);
   for(std::size_t i = 0; i < nt; ++i) {
     for(int j = 0; j < 3; ++j)
-      AFM_CHECK(to_uint(conn[3 * i + j]) == m.triangles[i][j]);
-    AFM_CHECK(to_uint(offsets[i]) == 3 * (i + 1));
-    AFM_CHECK(types[i] == "5");
+      AFM_CHECK(conn[3 * i + j] == std::int64_t(m.triangles[i][j]));
+    AFM_CHECK(offsets[i] == std::int64_t(3 * (i + 1)));
+    AFM_CHECK(types[i] == 5);
   }
 }
 
@@ -570,7 +647,8 @@ AFM_TEST_CASE(test_streaming_writer_matches_write_mesh)
   AFM_CHECK(view.triangles.size() > 300);
 
   typedef afm_io::Streaming_mesh_writer<K::Point_2> Epick_writer;
-  const std::vector<std::string> names = {dir.file("s.off"), dir.file("s.ele"), dir.file("s.msh")};
+  const std::vector<std::string> names = {dir.file("s.off"), dir.file("s.ele"), dir.file("s.msh"),
+                                          dir.file("s.vtu")};
   {
     Epick_writer w(names);
     for(std::size_t i = 0; i < view.points.size(); ++i)
@@ -582,6 +660,37 @@ AFM_TEST_CASE(test_streaming_writer_matches_write_mesh)
   afm_io::write_mesh(dir.file("r.off"), cdt);
   afm_io::write_mesh(dir.file("r.node"), cdt);
   afm_io::write_mesh(dir.file("r.msh"), cdt);
+  afm_io::write_mesh(dir.file("r.vtu"), cdt);
+  // binary VTU: the same bytes
+  AFM_CHECK(read_text(dir.file("s.vtu")) == read_text(dir.file("r.vtu")));
+  // ASCII VTU: the same numbers
+  {
+    afm_io::Streaming_mesh_writer_options ascii;
+    ascii.use_binary_mode = false;
+    Epick_writer w({dir.file("sa.vtu")}, ascii);
+    for(std::size_t i = 0; i < view.points.size(); ++i)
+      w.add_vertex(i, K::Point_2(view.points[i][0], view.points[i][1]));
+    for(const std::array<std::size_t, 3>& t : view.triangles)
+      w.add_triangle(t[0], t[1], t[2]);
+    w.close();
+  }
+  afm_io::write_mesh(dir.file("ra.vtu"), cdt, CGAL::parameters::use_binary_mode(false));
+  {
+    const Vtu_arrays a = read_vtu_arrays(read_text(dir.file("sa.vtu")));
+    const Vtu_arrays b = read_vtu_arrays(read_text(dir.file("ra.vtu")));
+    const Vtu_arrays c = read_vtu_arrays(read_text(dir.file("r.vtu")));
+    AFM_CHECK(!a.binary && !b.binary && c.binary);
+    AFM_CHECK(a.integers == b.integers && a.integers == c.integers);
+    AFM_CHECK(a.reals.size() == b.reals.size() && a.reals.size() == c.reals.size());
+    for(const auto& k : a.reals) {
+      const std::vector<double>& x = k.second;
+      const std::vector<double>& y = b.reals.at(k.first);
+      const std::vector<double>& z = c.reals.at(k.first);
+      AFM_CHECK(x.size() == y.size() && x.size() == z.size());
+      for(std::size_t i = 0; i < x.size(); ++i)
+        AFM_CHECK_MSG(same_bits(x[i], y[i]) && same_bits(x[i], z[i]), k.first << " " << i);
+    }
+  }
 
   for(const char* ext : {".off", ".node", ".ele", ".msh"}) {
     const std::vector<std::string> a = tokens(read_text(dir.file(std::string("s") + ext)));
@@ -600,9 +709,11 @@ AFM_TEST_CASE(test_streaming_writer_matches_write_mesh)
 // (checkpoint at event `first`, dies at event `second` >= `first`) and is
 // resumed from that checkpoint; then finishes and closes.
 void write_with_interruptions(const std::vector<std::string>& names, const Test_mesh& m,
-                              const std::vector<std::pair<std::size_t, std::size_t> >& plan)
+                              const std::vector<std::pair<std::size_t, std::size_t> >& plan,
+                              const afm_io::Streaming_mesh_writer_options& options =
+                                afm_io::Streaming_mesh_writer_options())
 {
-  std::unique_ptr<Writer> w(new Writer(names));
+  std::unique_ptr<Writer> w(new Writer(names, options));
   std::size_t done = 0;
   for(const std::pair<std::size_t, std::size_t>& p : plan) {
     stream(*w, m, done, p.first);
@@ -626,6 +737,8 @@ void write_with_interruptions(const std::vector<std::string>& names, const Test_
     done = p.first;
   }
   stream(*w, m, done, m.events.size());
+  for(std::size_t i = 0; i < m.segments.size(); ++i)
+    w->add_segment(m.segments[i][0], m.segments[i][1], m.segment_markers[i]);
   w->close();
 }
 
@@ -764,7 +877,11 @@ AFM_TEST_CASE(test_streaming_writer_rejects_corrupt_states)
   corrupt(replaced("\noutputs 4\n", "\noutputs 0\n"));
   corrupt(replaced("output ", "output 99999999999"));  // a name longer than the state
   corrupt(replaced("output ", "output 18446744073709551615")); // ... and than memory
-  corrupt(replaced("state 1\n", "state 2\n"));
+  corrupt(replaced("state 2\n", "state 3\n"));
+  corrupt(replaced("content 1 0 0", "content 2 0 0"));
+  corrupt(replaced("content 1 0 0", "content 1 0 1 0x1p+0")); // regions without tags
+  corrupt(replaced("files 2\n", "files 3\n"));
+  corrupt(replaced("groups 0", "groups 1 5"));
   corrupt(replaced("bbox ", "bbox inf "));
   corrupt(replaced("bbox ", "bbox nan "));
   corrupt(replaced("\nfile ", "\nfile 99999999999999999999999"));
@@ -804,7 +921,7 @@ AFM_TEST_CASE(test_streaming_writer_resume_missing_or_short_file)
   }
   auto sizes = [&] {
     std::vector<std::uintmax_t> r;
-    for(const char* f : {"a.off.vertices.part", "a.off.triangles.part", "b.node", "b.ele"})
+    for(const char* f : {"a.off.vertices.part", "a.off.triangles.part", "b.node.part", "b.ele.part"})
       r.push_back(fs::exists(dir.file(f)) ? fs::file_size(dir.file(f)) : 0);
     return r;
   };
@@ -820,7 +937,7 @@ AFM_TEST_CASE(test_streaming_writer_resume_missing_or_short_file)
   fs::rename(part + ".away", part);
 
   // a file shorter than at the checkpoint
-  const std::string node = dir.file("b.node");
+  const std::string node = dir.file("b.node.part");
   const std::uintmax_t node_size = fs::file_size(node);
   fs::resize_file(node, 30);
   msg = thrown_message<std::runtime_error>([&] { Writer::resume(state); });
@@ -877,6 +994,276 @@ AFM_TEST_CASE(test_streaming_writer_write_error)
     const std::string msg = thrown_message<std::runtime_error>([&] { w.close(); });
     AFM_CHECK_MSG(msg == "cannot write " + out + ".vertices.part", msg);
   }
+}
+
+// ---------------------------------------------------------------------------
+// Markers and regions
+
+// The grid with tags: vertex markers, three region attributes (0 among
+// them), the grid's border as segments with a marker per side.
+Test_mesh tagged_grid_mesh(std::size_t nx, std::size_t ny)
+{
+  Test_mesh m = grid_mesh(nx, ny);
+  for(std::size_t v = 0; v < m.points.size(); ++v) m.markers.push_back(int(v % 7) - 2);
+  for(std::size_t t = 0; t < m.triangles.size(); ++t) m.attributes.push_back(t % 5 == 0 ? 0. : t % 5 < 3 ? 1.5 : -7.);
+  auto vid = [nx](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
+  for(std::size_t i = 0; i < nx; ++i) {
+    m.segments.push_back({{vid(i, 0), vid(i + 1, 0)}});
+    m.segment_markers.push_back(3);
+    m.segments.push_back({{vid(i + 1, ny), vid(i, ny)}});
+    m.segment_markers.push_back(-4);
+  }
+  for(std::size_t j = 0; j < ny; ++j) {
+    m.segments.push_back({{vid(nx, j), vid(nx, j + 1)}});
+    m.segment_markers.push_back(0);
+  }
+  return m;
+}
+
+afm_io::Streaming_mesh_writer_options tag_options(bool binary = true)
+{
+  afm_io::Streaming_mesh_writer_options o;
+  o.use_binary_mode = binary;
+  o.markers = true;
+  o.region_attributes = {1.5, 0., -7., 1.5}; // any order, duplicates ignored
+  return o;
+}
+
+void check_tagged_node_ele_edge(const std::string& base, const Test_mesh& m)
+{
+  const std::vector<std::string> nt = tokens(read_text(base + ".node"));
+  const std::vector<std::string> et = tokens(read_text(base + ".ele"));
+  const std::vector<std::string> st = tokens(read_text(base + ".edge"));
+  AFM_CHECK(read_text(base + ".node").compare(0, 27, padded_count(m.points.size()) + " 2 0 1\n") == 0);
+  AFM_CHECK(read_text(base + ".ele").compare(0, 25, padded_count(m.triangles.size()) + " 3 1\n") == 0);
+  AFM_CHECK(nt.size() == 4 + 4 * m.points.size() && et.size() == 3 + 5 * m.triangles.size());
+  for(std::size_t i = 0, k = 4; i < m.points.size(); ++i, k += 4) {
+    AFM_CHECK(to_uint(nt[k]) == i + 1);
+    check_point(m, i, nt[k + 1], nt[k + 2], base + ".node");
+    AFM_CHECK_MSG(std::stoi(nt[k + 3]) == m.markers[i], base << ".node: marker of " << i);
+  }
+  for(std::size_t i = 0, k = 3; i < m.triangles.size(); ++i, k += 5) {
+    AFM_CHECK(to_uint(et[k]) == i + 1 && to_uint(et[k + 1]) == m.triangles[i][0] + 1);
+    AFM_CHECK_MSG(same_bits(to_double(et[k + 4]), m.attributes[i]), base << ".ele: attribute of " << i);
+  }
+  AFM_CHECK(st.size() == 2 + 4 * m.segments.size() && to_uint(st[0]) == m.segments.size() && st[1] == "1");
+  for(std::size_t i = 0, k = 2; i < m.segments.size(); ++i, k += 4)
+    AFM_CHECK_MSG(to_uint(st[k]) == i + 1 && to_uint(st[k + 1]) == m.segments[i][0] + 1 &&
+                  to_uint(st[k + 2]) == m.segments[i][1] + 1 && std::stoi(st[k + 3]) == m.segment_markers[i],
+                  base << ".edge: segment " << i);
+}
+
+void check_tagged_vtu(const std::string& path, const Test_mesh& m, bool binary)
+{
+  const Vtu_arrays a = read_vtu_arrays(read_text(path));
+  AFM_CHECK(a.binary == binary);
+  const std::size_t nt = m.triangles.size(), ns = m.segments.size();
+  const std::vector<std::int64_t>& conn = a.integers.at("connectivity");
+  const std::vector<std::int64_t>& types = a.integers.at("types");
+  const std::vector<std::int64_t>& offsets = a.integers.at("offsets");
+  AFM_CHECK(conn.size() == 3 * nt + 2 * ns && types.size() == nt + ns && offsets.size() == nt + ns);
+  for(std::size_t i = 0; i < ns; ++i) {
+    AFM_CHECK(conn[3 * nt + 2 * i] == std::int64_t(m.segments[i][0]) &&
+              conn[3 * nt + 2 * i + 1] == std::int64_t(m.segments[i][1]));
+    AFM_CHECK(types[nt + i] == 3 && offsets[nt + i] == std::int64_t(3 * nt + 2 * (i + 1)));
+  }
+  const std::vector<std::int64_t>& pm = a.integers.at("point marker");
+  AFM_CHECK(pm.size() == m.points.size());
+  for(std::size_t v = 0; v < pm.size(); ++v) AFM_CHECK(pm[v] == m.markers[v]);
+  const std::vector<std::int64_t>& cm = a.integers.at("cell marker");
+  const std::vector<double>& region = a.reals.at("region");
+  AFM_CHECK(cm.size() == nt + ns && region.size() == nt + ns);
+  for(std::size_t t = 0; t < nt; ++t) AFM_CHECK(cm[t] == 0 && same_bits(region[t], m.attributes[t]));
+  for(std::size_t i = 0; i < ns; ++i) AFM_CHECK(cm[nt + i] == m.segment_markers[i] && region[nt + i] == 0);
+}
+
+// The physical groups of a tagged .msh: for each element tag, the name of
+// its group; node coordinates as in the mesh.
+void check_tagged_msh(const std::string& path, const Test_mesh& m)
+{
+  const std::vector<std::string> l = lines(read_text(path));
+  std::map<std::pair<int, int>, std::string> names; // (dim, physical tag)
+  std::map<std::pair<int, int>, int> entity_group; // (dim, entity) -> physical tag
+  std::map<std::uint64_t, std::pair<std::string, std::vector<std::uint64_t> > > elements; // tag -> group, nodes
+  std::size_t k = 0;
+  auto find = [&](const std::string& s) {
+    while(k < l.size() && l[k] != s) ++k;
+    AFM_CHECK_MSG(k < l.size(), path << ": no " << s);
+    ++k;
+  };
+  find("$PhysicalNames");
+  for(std::size_t n = to_uint(l[k++]), i = 0; i < n; ++i) {
+    const std::vector<std::string> t = tokens(l[k++]);
+    names[{std::stoi(t[0]), std::stoi(t[1])}] = t[2].substr(1, t[2].size() - 2);
+  }
+  find("$Entities");
+  const std::vector<std::string> counts = tokens(l[k++]);
+  AFM_CHECK(counts[0] == "0" && counts[3] == "0");
+  for(int dim = 1; dim <= 2; ++dim)
+    for(std::uint64_t i = 0; i < to_uint(counts[dim]); ++i) {
+      const std::vector<std::string> t = tokens(l[k++]);
+      AFM_CHECK(t.size() == 10 && t[7] == "1" && t[9] == "0");
+      entity_group[{dim, std::stoi(t[0])}] = std::stoi(t[8]);
+    }
+  find("$Nodes");
+  const std::vector<std::string> nh = tokens(l[k++]);
+  AFM_CHECK(to_uint(nh[1]) == m.points.size());
+  k += 1 + m.points.size(); // the block header and the tags
+  for(std::size_t i = 0; i < m.points.size(); ++i) {
+    const std::vector<std::string> c = tokens(l[k++]);
+    check_point(m, i, c[0], c[1], path);
+  }
+  find("$Elements");
+  const std::vector<std::string> eh = tokens(l[k++]);
+  const std::uint64_t ne = to_uint(eh[1]);
+  AFM_CHECK(ne == m.triangles.size() + m.segments.size() && eh[2] == "1" && to_uint(eh[3]) == ne);
+  for(std::uint64_t b = 0, blocks = to_uint(eh[0]); b < blocks; ++b) {
+    const std::vector<std::string> bh = tokens(l[k++]);
+    const int dim = std::stoi(bh[0]);
+    AFM_CHECK(bh[2] == (dim == 1 ? "1" : "2"));
+    const std::string group = names.at({dim, entity_group.at({dim, std::stoi(bh[1])})});
+    for(std::uint64_t e = 0, n = to_uint(bh[3]); e < n; ++e) {
+      const std::vector<std::string> t = tokens(l[k++]);
+      std::vector<std::uint64_t> nodes;
+      for(std::size_t j = 1; j < t.size(); ++j) nodes.push_back(to_uint(t[j]) - 1);
+      AFM_CHECK_MSG(elements.emplace(to_uint(t[0]), std::make_pair(group, nodes)).second, "element tag twice");
+    }
+  }
+  AFM_CHECK(l[k] == "$EndElements");
+  AFM_CHECK(elements.size() == ne && elements.begin()->first == 1 && elements.rbegin()->first == ne);
+  // triangles first, in the order received, then the segments
+  for(std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& e = elements.at(t + 1);
+    const double a = m.attributes[t];
+    const std::string want = a == 1.5 ? "region_1.5" : a == 0 ? "region_0" : "region_-7";
+    AFM_CHECK_MSG(e.first == want && e.second == std::vector<std::uint64_t>(m.triangles[t].begin(), m.triangles[t].end()),
+                  path << ": triangle " << t << " in " << e.first);
+  }
+  for(std::size_t i = 0; i < m.segments.size(); ++i) {
+    const auto& e = elements.at(m.triangles.size() + i + 1);
+    AFM_CHECK(e.first == "marker_" + std::to_string(m.segment_markers[i]));
+    AFM_CHECK(e.second == std::vector<std::uint64_t>(m.segments[i].begin(), m.segments[i].end()));
+  }
+}
+
+AFM_TEST_CASE(test_streaming_writer_markers_and_regions)
+{
+  Temp_dir dir("tagged");
+  const Test_mesh m = tagged_grid_mesh(23, 17);
+  for(bool binary : {true, false}) {
+    const std::vector<std::string> names = {dir.file("t.node"), dir.file("t.msh"), dir.file("t.vtu"),
+                                            dir.file("t.off")};
+    {
+      Writer w(names, tag_options(binary));
+      stream(w, m, 0, m.events.size());
+      for(std::size_t i = 0; i < m.segments.size(); ++i)
+        w.add_segment(m.segments[i][0], m.segments[i][1], m.segment_markers[i]);
+      w.close();
+    }
+    check_tagged_node_ele_edge(dir.file("t"), m);
+    check_tagged_msh(names[1], m);
+    check_tagged_vtu(names[2], m, binary);
+    check_off(names[3], m);
+    check_only_files(dir, {dir.file("t.node"), dir.file("t.ele"), dir.file("t.edge"), names[1], names[2], names[3]});
+  }
+
+  // interrupted and resumed: the same files
+  Temp_dir ref("tagged_ref");
+  const std::vector<std::string> outputs = {"a.node", "b.msh", "c.vtu"};
+  std::vector<std::string> run_names, ref_names;
+  for(const std::string& o : outputs) {
+    run_names.push_back(dir.file(o));
+    ref_names.push_back(ref.file(o));
+  }
+  write_with_interruptions(ref_names, m, {}, tag_options());
+  const std::size_t n = m.events.size();
+  write_with_interruptions(run_names, m, {{n / 3, n / 2}, {n / 2, n - 1}}, tag_options());
+  for(const char* f : {"a.node", "a.ele", "a.edge", "b.msh", "c.vtu"})
+    AFM_CHECK_MSG(read_text(dir.file(f)) == read_text(ref.file(f)), f << " differs after resume");
+
+  // without regions: one surface, "domain"
+  {
+    Test_mesh plain = m;
+    plain.attributes.clear();
+    afm_io::Streaming_mesh_writer_options o;
+    o.markers = true;
+    Writer w({dir.file("p.msh"), dir.file("p.ele")}, o);
+    stream(w, plain, 0, plain.events.size());
+    w.add_segment(0, 1, 5);
+    w.close();
+    const std::string text = read_text(dir.file("p.msh"));
+    AFM_CHECK(text.find("$PhysicalNames\n2\n1 5 \"marker_5\"\n2 1 \"domain\"\n") != std::string::npos);
+    AFM_CHECK(read_text(dir.file("p.ele")).compare(0, 25, padded_count(m.triangles.size()) + " 3 0\n") == 0);
+    AFM_CHECK(tokens(read_text(dir.file("p.edge"))) == (std::vector<std::string>{"1", "1", "1", "1", "2", "5"}));
+  }
+}
+
+AFM_TEST_CASE(test_streaming_writer_rejects_bad_tags)
+{
+  Temp_dir dir("bad_tags");
+  afm_io::Streaming_mesh_writer_options regions_only;
+  regions_only.region_attributes = {1.};
+  thrown_message<std::invalid_argument>([&] { Writer w({dir.file("a.off")}, regions_only); });
+  afm_io::Streaming_mesh_writer_options nan = tag_options();
+  nan.region_attributes.push_back(std::numeric_limits<double>::quiet_NaN());
+  thrown_message<std::invalid_argument>([&] { Writer w({dir.file("a.off")}, nan); });
+  check_only_files(dir, {});
+  {
+    Writer w({dir.file("a.off")});
+    w.add_vertex(0, Point(0, 0));
+    w.add_vertex(1, Point(1, 0));
+    thrown_message<std::logic_error>([&] { w.add_segment(0, 1, 1); }); // no markers
+  }
+  {
+    Writer w({dir.file("b.vtu")}, tag_options());
+    w.add_vertex(0, Point(0, 0), 1);
+    w.add_vertex(1, Point(1, 0), 1);
+    w.add_vertex(2, Point(0, 1), 1);
+    thrown_message<std::invalid_argument>([&] { w.add_triangle(0, 1, 2, 2.5); }); // not announced
+    w.add_triangle(0, 1, 2, -7.);
+    thrown_message<std::logic_error>([&] { w.add_segment(0, 3, 1); });
+    w.add_segment(0, 1, 1);
+    thrown_message<std::logic_error>([&] { w.checkpoint_state(); }); // segments are not checkpointed
+    w.close();
+  }
+  // the writer of a.off was abandoned: its part files stay, for a resume
+  check_only_files(dir, {dir.file("b.vtu"), dir.file("a.off.vertices.part"), dir.file("a.off.triangles.part")});
+}
+
+// Until close(), no file under a final name: the constructor removes those
+// of an earlier run, and a writer that dies leaves only its part files.
+AFM_TEST_CASE(test_streaming_writer_no_final_file_before_close)
+{
+  Temp_dir dir("interrupted");
+  const Test_mesh m = tagged_grid_mesh(8, 9);
+  const std::vector<std::string> finals = {dir.file("a.off"), dir.file("b.vtu"), dir.file("c.msh"),
+                                           dir.file("d.node"), dir.file("d.ele"), dir.file("d.edge")};
+  for(const std::string& f : finals) std::ofstream(f.c_str()) << "a mesh of an earlier run\n";
+  std::string state;
+  {
+    Writer w({finals[0], finals[1], finals[2], finals[3]}, tag_options());
+    for(const std::string& f : finals) AFM_CHECK_MSG(!fs::exists(f), f << " was not removed");
+    stream(w, m, 0, m.events.size() / 2);
+    state = w.checkpoint_state();
+    stream(w, m, m.events.size() / 2, m.events.size());
+  } // dies before close()
+  for(const std::string& f : finals) AFM_CHECK_MSG(!fs::exists(f), f << " exists before close()");
+  std::unique_ptr<Writer> w = Writer::resume(state);
+  stream(*w, m, m.events.size() / 2, m.events.size());
+  for(std::size_t i = 0; i < m.segments.size(); ++i)
+    w->add_segment(m.segments[i][0], m.segments[i][1], m.segment_markers[i]);
+  for(const std::string& f : finals) AFM_CHECK(!fs::exists(f));
+  w->close();
+  check_only_files(dir, finals);
+  check_tagged_node_ele_edge(dir.file("d"), m);
+  check_tagged_vtu(finals[1], m, true);
+  check_tagged_msh(finals[2], m);
+
+  // a final name that is a directory is refused before anything is written
+  Temp_dir dir2("final_is_dir");
+  fs::create_directory(dir2.file("x.off"));
+  const std::string msg = thrown_message<std::runtime_error>([&] { Writer w2({dir2.file("x.off")}); });
+  AFM_CHECK_MSG(msg.find("cannot write") == 0, msg);
 }
 
 } // namespace

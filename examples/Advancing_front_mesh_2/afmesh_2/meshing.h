@@ -9,6 +9,7 @@
 
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/Streaming_mesh_writer.h>
+#include <CGAL/Advancing_front_mesh_2/IO/Streaming_tagging_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
 #include <CGAL/Advancing_front_mesh_2/quality_smooth_mesh_2.h>
 
@@ -77,29 +78,33 @@ inline void check_checkpoint_writable(const Options& opt)
   std::remove(tmp.c_str());
 }
 
-// --stream: the writer of the outputs, new or resumed from the checkpoint,
-// becomes the mesher's sink; a resumed run loads the checkpoint.
 template <class K>
-std::unique_ptr<AFM::IO::Streaming_mesh_writer<typename K::Point_2> > start_streaming(const Options& opt,
-                                                                                    Mesher<K>& mesher)
+using Tagging_sink = AFM::IO::Streaming_tagging_sink_2<typename Types<K>::CDT>;
+
+// --stream: the writer of the outputs with the markers and regions of the
+// input (found on a copy of it before meshing), new or resumed from the
+// checkpoint, becomes the mesher's sink; a resumed run loads the checkpoint.
+template <class K>
+std::unique_ptr<Tagging_sink<K> > start_streaming(const Options& opt, Input<K>& in, Mesher<K>& mesher)
 {
   typedef AFM::IO::Streaming_mesh_writer<typename K::Point_2> Writer;
   check_checkpoint_writable(opt);
-  std::unique_ptr<Writer> writer;
+  std::unique_ptr<Tagging_sink<K> > sink;
   try {
     if(opt.resume.empty()) {
       std::vector<std::string> outputs = opt.outputs;
       // the writer's state in a checkpoint names them
       if(opt.checkpoint_every > 0)
         for(std::string& out : outputs) out = absolute_path(out);
-      writer.reset(new Writer(outputs));
+      sink.reset(new Tagging_sink<K>(in.cdt, in.tags));
+      sink->set_writer(std::unique_ptr<Writer>(new Writer(outputs, sink->writer_options(!opt.vtu_ascii))));
     } else {
-      writer = Writer::resume(Mesher<K>::read_checkpoint_info(opt.resume).sink_state);
+      sink = Tagging_sink<K>::resume(Mesher<K>::read_checkpoint_info(opt.resume).sink_state, in.cdt, in.tags);
     }
   } catch(const std::exception& e) {
     throw Input_error((opt.resume.empty() ? std::string("output") : opt.resume) + ": " + e.what());
   }
-  mesher.set_output_sink(writer.get());
+  mesher.set_output_sink(sink.get());
   if(!opt.resume.empty()) {
     try {
       mesher.resume(opt.resume);
@@ -109,7 +114,7 @@ std::unique_ptr<AFM::IO::Streaming_mesh_writer<typename K::Point_2> > start_stre
   }
   if(opt.checkpoint_every > 0)
     mesher.set_checkpoint(opt.checkpoint_every, opt.checkpoint_file, opt.arguments, opt.stop_after_checkpoint);
-  return writer;
+  return sink;
 }
 
 template <class K>

@@ -19,7 +19,7 @@ namespace afmesh_2 {
 // A streamed run: the mesh is in the files; no quality figures, no pictures.
 template <class K>
 int finish_streamed_run(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_code rc,
-                        AFM::IO::Streaming_mesh_writer<typename K::Point_2>* writer, double t_meshing,
+                        Tagging_sink<K>* sink, double t_meshing,
                         std::chrono::steady_clock::time_point t_start)
 {
   const AFM::Statistics& st = mesher.statistics();
@@ -27,9 +27,9 @@ int finish_streamed_run(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_
     std::cerr << "afmesh_2: note: stopped after writing the checkpoint " << opt.checkpoint_file << " ("
               << st.number_of_faces << " triangles written so far); continue with: afmesh_2 --resume "
               << opt.checkpoint_file << "\n";
-  } else if(writer != nullptr) {
+  } else if(sink != nullptr) {
     try {
-      writer->close();
+      sink->close();
     } catch(const std::exception& e) {
       std::cerr << program << ": error: " << e.what() << "\n";
       return 3;
@@ -68,10 +68,6 @@ int run(const Options& opt)
   const auto t_start = std::chrono::steady_clock::now();
   Input<K> in;
   load_input(opt, in);
-  if(opt.stream && (in.tags.has_markers() || in.tags.has_regions()))
-    std::cerr << "afmesh_2: note: " << opt.input
-              << ": the streamed outputs do not carry the boundary markers and regions (write without --stream "
-                 "to keep them)\n";
   Progress_visitor progress;
   progress.enabled = isatty(2) != 0;
   // a resumed run meshes in an empty triangulation: the state comes from
@@ -79,8 +75,8 @@ int run(const Options& opt)
   typename Types<K>::CDT resumed_cdt;
   Mesher<K> mesher(opt.resume.empty() ? in.cdt : resumed_cdt, in.sizing, progress);
   configure(opt, in, mesher);
-  std::unique_ptr<AFM::IO::Streaming_mesh_writer<typename K::Point_2> > writer;
-  if(opt.stream) writer = start_streaming<K>(opt, mesher);
+  std::unique_ptr<Tagging_sink<K> > sink;
+  if(opt.stream) sink = start_streaming<K>(opt, in, mesher);
   const auto t_mesh = std::chrono::steady_clock::now();
   AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
   if(!run_mesher<K>(opt, mesher, rc)) return 3;
@@ -89,7 +85,7 @@ int run(const Options& opt)
   const AFM::Statistics& st = mesher.statistics();
   if(rc != AFM::STOPPED_AT_CHECKPOINT && st.number_of_faces == 0)
     throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
-  if(opt.stream) return finish_streamed_run<K>(opt, mesher, rc, writer.get(), t.meshing, t_start);
+  if(opt.stream) return finish_streamed_run<K>(opt, mesher, rc, sink.get(), t.meshing, t_start);
   return finish_run_in_memory<K>(opt, in, mesher, rc, t, t_start);
 }
 

@@ -52,6 +52,19 @@ public:
   virtual void add_triangle(std::size_t /*i*/, std::size_t /*j*/, std::size_t /*k*/) {}
 
   /*!
+  receives a finished triangle, counter-clockwise, with the points of its
+  vertices: the mesher calls this one. By default it calls
+  `add_triangle(i, j, k)`; a sink that needs the geometry of the triangles
+  without keeping every vertex in memory overrides it (as
+  `IO::Streaming_tagging_sink_2` does to find the region of each triangle).
+  */
+  virtual void add_finished_triangle(std::size_t i, std::size_t j, std::size_t k, const Point& /*a*/,
+                                     const Point& /*b*/, const Point& /*c*/)
+  {
+    add_triangle(i, j, k);
+  }
+
+  /*!
   Called when the mesher writes a checkpoint: makes everything received so
   far durable, and returns what a sink of the same type needs to continue
   the output later exactly from this point (it is stored in the checkpoint

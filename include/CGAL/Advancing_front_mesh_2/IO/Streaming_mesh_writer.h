@@ -16,6 +16,8 @@
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_files.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_writer_state.h>
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Vtu_layout.h>
+#include <CGAL/Advancing_front_mesh_2/IO/write_gmsh_msh.h>
 
 #include <CGAL/number_utils.h>
 
@@ -30,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -44,6 +47,31 @@ namespace IO {
 /*!
 \ingroup PkgAdvancingFrontMesh2IO
 
+What the outputs of a `Streaming_mesh_writer` hold beyond the mesh, and how
+VTU arrays are encoded.
+*/
+struct Streaming_mesh_writer_options
+{
+  /// VTU arrays in binary (raw appended, as `write_mesh_VTU()`), or in ASCII when `false`
+  bool use_binary_mode = true;
+  /*!
+  Whether the outputs carry boundary markers: a marker per vertex and the
+  segments with their markers (`add_vertex()` and `add_segment()` with a
+  marker), written as `write_mesh()` writes them with a
+  `Markers_and_regions_2` object.
+  */
+  bool markers = false;
+  /*!
+  With `markers`: the region attributes the triangles may have (in any
+  order; duplicates are ignored); empty for no regions. Triangles outside
+  every region have attribute 0, which must then be listed.
+  */
+  std::vector<double> region_attributes;
+};
+
+/*!
+\ingroup PkgAdvancingFrontMesh2IO
+
 A `Mesh_sink_2` that writes the mesh to files while it is being generated,
 in memory independent of the size of the mesh, so that meshes much larger
 than the memory can be written; one writer feeds any number of outputs.
@@ -51,25 +79,31 @@ than the memory can be written; one writer feeds any number of outputs.
 The format of each output is given by the extension of its name
 (case-insensitive), with the same content as `write_mesh()`:
 - `.off`: as `write_OFF()`;
-- `.vtu`: a VTK unstructured grid in ASCII with the points (z = 0) and one
-  triangle cell (type 5) per triangle, counter-clockwise, 0-based;
-- `.node` or `.ele`: both `BASENAME.node` and `BASENAME.ele`, as
-  `write_triangle_node_ele()` except that the count of the first line is
-  padded with spaces to 20 characters;
+- `.vtu`: as `write_mesh_VTU()`: binary unless
+  `Streaming_mesh_writer_options::use_binary_mode` is `false`;
+- `.node` or `.ele`: both `BASENAME.node` and `BASENAME.ele` (and
+  `BASENAME.edge` with markers), as `write_triangle_node_ele()` except that
+  the count of the first line is padded with spaces to 20 characters;
 - `.msh`: as `write_gmsh_msh()`, the bounding box of the written vertices
-  included.
+  included. With markers, every entity has the bounding box of the whole
+  mesh, and the triangles have element tags 1 to `nt` in the order they
+  were received, the segments `nt + 1` on (a Gmsh reader takes element
+  tags in any order).
 
 Vertices and triangles are written in the order and with the numbers they
 are received (0-based for OFF and VTU, 1-based for Triangle and Gmsh).
 Coordinates are converted with `CGAL::to_double()` and written as the
-shortest decimal that reads back to the same double.
+shortest decimal that reads back to the same double (or as raw doubles in
+binary VTU). With markers and regions (see `Streaming_mesh_writer_options`),
+the files carry them as `write_mesh()` does with a `Markers_and_regions_2`
+object; `Streaming_tagging_sink_2` finds them while the mesh is streamed.
 
-OFF, VTU and MSH files give their counts before the vertices and the
-vertices before the elements, so the vertex and triangle lines are written to
-the part files `NAME.vertices.part` and `NAME.triangles.part` beside each
-output `NAME`, and `close()` assembles the final file from them and removes
-them. The `.node` and `.ele` files are written directly, and `close()` fills
-in their counts.
+Everything is first written to part files beside each output (`NAME.*.part`,
+`BASENAME.node.part`, ...). `close()` makes each final file from them under
+the name `FINAL.part` and renames it to its final name only when every
+output is complete: an interrupted run leaves no half-written file under a
+final name, and the constructor removes the final files of an earlier run,
+so that a stale mesh cannot be taken for this one's.
 
 At a checkpoint, `checkpoint_state()` makes the files durable and returns a
 text from which `resume()` continues the output exactly from that point,
@@ -83,41 +117,59 @@ class Streaming_mesh_writer : public Mesh_sink_2<Point>
 {
 public:
   /*!
-  Creates the files of every output: the part files, `.node` and `.ele`
-  with a provisional first line, and each final OFF, VTU or MSH file,
-  emptied now so that a stale mesh from an earlier run cannot be taken for
-  this one's and an unwritable destination is reported before the meshing.
+  Creates the part files of every output (the `.node` and `.ele` ones with
+  a provisional first line) and removes the final files of the outputs, so
+  that a stale mesh from an earlier run cannot be taken for this one's;
+  an unwritable destination is reported before the meshing.
 
   \param file_names the outputs; their format is given by their extension
   (see the class description)
+  \param options what the outputs hold beyond the mesh, and the VTU encoding
 
   \throws std::invalid_argument if `file_names` is empty, if an extension is
   not one of `.off`, `.vtu`, `.node`, `.ele`, `.msh` (`.svg`, for one, needs
-  the whole mesh), or if two outputs would write the same file (such as
-  `a.node` and `a.ele`); no file is created then
+  the whole mesh), if two outputs would write the same file (such as
+  `a.node` and `a.ele`), if a region attribute is not finite, or if
+  regions are given without markers; no file is created then
   \throws std::runtime_error "cannot write FILE" if a file cannot be created
+  or a final file cannot be removed
   */
-  explicit Streaming_mesh_writer(const std::vector<std::string>& file_names)
+  explicit Streaming_mesh_writer(const std::vector<std::string>& file_names,
+                                 const Streaming_mesh_writer_options& options = Streaming_mesh_writer_options())
     : file_names_(file_names)
   {
     if(file_names.empty())
       throw std::invalid_argument("Streaming_mesh_writer: no output file given");
+    content_.binary = options.use_binary_mode;
+    content_.tagged = options.markers;
+    content_.attributes = options.region_attributes;
+    for(double a : content_.attributes)
+      if(!std::isfinite(a))
+        throw std::invalid_argument("Streaming_mesh_writer: a region attribute is not finite");
+    std::sort(content_.attributes.begin(), content_.attributes.end());
+    content_.attributes.erase(std::unique(content_.attributes.begin(), content_.attributes.end()),
+                              content_.attributes.end());
+    if(content_.has_regions() && !content_.tagged)
+      throw std::invalid_argument("Streaming_mesh_writer: regions need markers (Streaming_mesh_writer_options::markers)");
+    group_counts_.assign(content_.attributes.size(), 0);
     make_outputs();
     std::vector<std::string> created;
     for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
-      if(o->format != internal::Streaming_format::NODE_ELE) {
-        std::FILE* f = std::fopen(o->name.c_str(), "wb");
-        if(f == nullptr || std::fclose(f) != 0)
-          throw std::runtime_error("cannot write " + o->name);
-        created.push_back(o->name);
+      for(const std::string& f : o->final_files(content_)) {
+        std::error_code ec;
+        if(std::filesystem::is_directory(f, ec))
+          throw std::runtime_error("cannot write " + f + " (a directory)");
+        std::filesystem::remove(f, ec);
+        if(ec)
+          throw std::runtime_error("cannot write " + f + " (cannot remove the file of an earlier run)");
       }
-      o->vertices.create();
-      o->triangles.create();
-      created.push_back(o->vertices.path());
-      created.push_back(o->triangles.path());
+      for(const std::unique_ptr<internal::Streaming_part>& p : o->parts) {
+        p->file.create();
+        created.push_back(p->file.path());
+      }
       if(o->format == internal::Streaming_format::NODE_ELE) {
-        internal::streaming_put_count_line(o->vertices, 0, internal::streaming_node_tail);
-        internal::streaming_put_count_line(o->triangles, 0, internal::streaming_ele_tail);
+        internal::streaming_put_count_line(o->vertices(), 0, node_tail());
+        internal::streaming_put_count_line(o->triangles(), 0, ele_tail());
       }
     }
     created_files_ = created;
@@ -133,8 +185,12 @@ public:
   Streaming_mesh_writer(const Streaming_mesh_writer&) = delete;
   Streaming_mesh_writer& operator=(const Streaming_mesh_writer&) = delete;
 
+  /// writes vertex `index` with marker 0; see `add_vertex(std::size_t, const Point&, int)`
+  void add_vertex(std::size_t index, const Point& p) override { add_vertex(index, p, 0); }
+
   /*!
-  Writes vertex `index` to every output.
+  Writes vertex `index` to every output, with its boundary `marker` where
+  the outputs carry markers (it is ignored otherwise).
 
   \pre `index` is the number of vertices written so far, and the coordinates
   converted to `double` are finite
@@ -145,7 +201,7 @@ public:
   \throws std::runtime_error "cannot write FILE" on a write error; the writer
   then refuses everything (resume from the last checkpoint)
   */
-  void add_vertex(std::size_t index, const Point& p) override
+  void add_vertex(std::size_t index, const Point& p, int marker)
   {
     check_writable("add_vertex()");
     if(index != nv_)
@@ -158,22 +214,34 @@ public:
       throw std::invalid_argument("Streaming_mesh_writer: vertex " + std::to_string(index) +
                                   " has a coordinate that is not a finite double");
 
-    // "x y", formatted once for all outputs
+    // "x y", formatted once for all text outputs
     char xy[2 * internal::streaming_max_double_chars + 1];
     char* e = internal::streaming_format_double(xy, x);
     *e++ = ' ';
     e = internal::streaming_format_double(e, y);
     const std::size_t n = static_cast<std::size_t>(e - xy);
+    char mark[internal::streaming_max_uint_chars + 2];
+    const std::size_t nm = static_cast<std::size_t>(std::to_chars(mark, mark + sizeof(mark), marker).ptr - mark);
 
     guarded([&] {
       for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
-        internal::Streaming_file& f = o->vertices;
-        char* c = f.reserve(internal::streaming_max_uint_chars + n + 4);
+        internal::Streaming_file& f = o->vertices();
+        if(o->format == internal::Streaming_format::VTU && content_.binary) {
+          put_raw(f, x); put_raw(f, y); put_raw(f, 0.);
+          if(o->vertex_markers != nullptr) put_raw(o->vertex_markers->file, std::int32_t(marker));
+          continue;
+        }
+        char* c = f.reserve(2 * internal::streaming_max_uint_chars + n + 8);
         if(o->format == internal::Streaming_format::NODE_ELE) {
           c = internal::streaming_format_uint(c, std::uint64_t(index) + 1);
           *c++ = ' ';
           std::memcpy(c, xy, n);
           c += n;
+          if(content_.tagged) {
+            *c++ = ' ';
+            std::memcpy(c, mark, nm);
+            c += nm;
+          }
           *c++ = '\n';
         } else {
           std::memcpy(c, xy, n);
@@ -182,6 +250,7 @@ public:
           c += 3;
         }
         f.commit(c);
+        if(o->vertex_markers != nullptr) put_line(o->vertex_markers->file, mark, nm);
       }
     });
 
@@ -196,17 +265,24 @@ public:
     ++nv_;
   }
 
+  /// writes triangle `(i, j, k)` with attribute 0; see `add_triangle(std::size_t, std::size_t, std::size_t, double)`
+  void add_triangle(std::size_t i, std::size_t j, std::size_t k) override { add_triangle(i, j, k, 0.); }
+
   /*!
-  Writes triangle `(i, j, k)` (counter-clockwise) to every output.
+  Writes triangle `(i, j, k)` (counter-clockwise) to every output, with the
+  attribute of its region where the outputs carry regions (it is ignored
+  otherwise).
 
   \pre `i`, `j` and `k` are smaller than `number_of_vertices()`
 
   \throws std::logic_error if an index is not that of a vertex written
   before, or after `close()`
+  \throws std::invalid_argument if the outputs carry regions and
+  `attribute` is not one of `Streaming_mesh_writer_options::region_attributes`
   \throws std::runtime_error "cannot write FILE" on a write error; the writer
   then refuses everything (resume from the last checkpoint)
   */
-  void add_triangle(std::size_t i, std::size_t j, std::size_t k) override
+  void add_triangle(std::size_t i, std::size_t j, std::size_t k, double attribute)
   {
     check_writable("add_triangle()");
     if(i >= nv_ || j >= nv_ || k >= nv_)
@@ -214,10 +290,18 @@ public:
                              std::to_string(j) + ", " + std::to_string(k) +
                              ") uses a vertex not received yet (" + std::to_string(nv_) +
                              " vertices so far)");
+    std::size_t group = 0;
+    if(content_.has_regions()) {
+      const auto it = std::lower_bound(content_.attributes.begin(), content_.attributes.end(), attribute);
+      if(it == content_.attributes.end() || *it != attribute)
+        throw std::invalid_argument("Streaming_mesh_writer: triangle " + std::to_string(nt_) +
+                                    " has a region attribute that was not announced");
+      group = static_cast<std::size_t>(it - content_.attributes.begin());
+    }
 
     // "i j k" (0-based) and "t i j k" (1-based), each formatted once
     char zero[3 * (internal::streaming_max_uint_chars + 1)];
-    char one[4 * (internal::streaming_max_uint_chars + 1)];
+    char one[4 * (internal::streaming_max_uint_chars + 1) + internal::streaming_max_double_chars + 1];
     char* z = zero;
     char* w = internal::streaming_format_uint(one, std::uint64_t(nt_) + 1);
     for(std::size_t v : {i, j, k}) {
@@ -228,49 +312,87 @@ public:
       w = internal::streaming_format_uint(w, std::uint64_t(v) + 1);
     }
     *z++ = '\n';
-    *w++ = '\n';
     const std::size_t nz = static_cast<std::size_t>(z - zero);
-    const std::size_t nw = static_cast<std::size_t>(w - one);
+    const std::size_t nw = static_cast<std::size_t>(w - one); // without the line end
+    char attr[internal::streaming_max_double_chars + 1];
+    const std::size_t na = static_cast<std::size_t>(internal::streaming_format_double(attr, attribute) - attr);
 
     guarded([&] {
       for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
-        internal::Streaming_file& f = o->triangles;
         switch(o->format) {
         case internal::Streaming_format::OFF:
-          f.put("3 ", 2);
-          f.put(zero, nz);
+          o->triangles().put("3 ", 2);
+          o->triangles().put(zero, nz);
           break;
         case internal::Streaming_format::VTU:
-          f.put(zero, nz);
+          if(content_.binary) {
+            for(std::size_t v : {i, j, k}) put_raw(o->triangles(), std::int64_t(v));
+            if(o->triangle_attributes != nullptr) put_raw(o->triangle_attributes->file, attribute);
+          } else {
+            o->triangles().put(zero, nz);
+            if(o->triangle_attributes != nullptr) put_line(o->triangle_attributes->file, attr, na);
+          }
           break;
         case internal::Streaming_format::NODE_ELE:
+          o->triangles().put(one, nw);
+          if(content_.has_regions()) {
+            o->triangles().put(" ", 1);
+            o->triangles().put(attr, na);
+          }
+          o->triangles().put("\n", 1);
+          break;
         case internal::Streaming_format::MSH:
-          f.put(one, nw);
+          put_line(o->triangles(o->triangle_parts > 1 ? group : 0), one, nw);
           break;
         }
       }
     });
+    if(content_.has_regions()) ++group_counts_[group];
     ++nt_;
+  }
+
+  /*!
+  Adds the segment from vertex `i` to vertex `j` with boundary `marker`,
+  for the outputs that carry markers. Segments are kept in memory (a
+  boundary is small beside its mesh) and written by `close()`, after the
+  triangles; they are not part of a checkpoint, so give them after the
+  last one, just before `close()` (as `Streaming_tagging_sink_2` does).
+
+  \throws std::logic_error if the outputs carry no markers, if `i` or `j` is
+  not a vertex written before, or after `close()`
+  */
+  void add_segment(std::size_t i, std::size_t j, int marker)
+  {
+    check_writable("add_segment()");
+    if(!content_.tagged)
+      throw std::logic_error("Streaming_mesh_writer: add_segment() on outputs without markers");
+    if(i >= nv_ || j >= nv_)
+      throw std::logic_error("Streaming_mesh_writer: segment (" + std::to_string(i) + ", " + std::to_string(j) +
+                             ") uses a vertex not received yet (" + std::to_string(nv_) + " vertices so far)");
+    segments_.push_back({{std::uint64_t(i), std::uint64_t(j)}});
+    segment_markers_.push_back(marker);
   }
 
   /*!
   Flushes all files, makes them durable (`fsync()` where POSIX is
   available, `_commit()` on Windows) and returns the text `resume()`
-  needs: a version line, the outputs as given, the counts, the bounding box
-  as hexadecimal floating-point numbers and the size of every file written.
-  Names are written length-prefixed, so any character may appear in them.
+  needs: a version line, the content options, the outputs as given, their
+  part files with their sizes, the counts and the bounding box (as
+  hexadecimal floating-point numbers). Names are written length-prefixed,
+  so any character may appear in them.
 
-  \throws std::logic_error after `close()`
+  \throws std::logic_error after `close()`, or once segments were added
   \throws std::runtime_error "cannot write FILE" on a write error
   */
   std::string checkpoint_state() override
   {
     check_writable("checkpoint_state()");
+    if(!segments_.empty())
+      throw std::logic_error("Streaming_mesh_writer: checkpoint_state() after add_segment() (segments are "
+                             "not part of a checkpoint: add them after the last one)");
     guarded([&] {
-      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
-        o->vertices.sync();
-        o->triangles.sync();
-      }
+      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_)
+        for(const std::unique_ptr<internal::Streaming_part>& p : o->parts) p->file.sync();
     });
     if(!created_files_.empty()) {
       // the files were created by this process: their names must survive too
@@ -288,18 +410,26 @@ public:
       char b[internal::streaming_max_double_chars];
       s.append(b, std::to_chars(b, b + sizeof(b), v, std::chars_format::hex).ptr);
     };
-    s += "outputs " + std::to_string(outputs_.size()) + "\n";
+    s += std::string("content ") + (content_.binary ? "1 " : "0 ") + (content_.tagged ? "1 " : "0 ") +
+         std::to_string(content_.attributes.size());
+    for(double a : content_.attributes) {
+      s += ' ';
+      put_double(a);
+    }
+    s += "\noutputs " + std::to_string(outputs_.size()) + "\n";
     for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
       s += "output ";
       put_name(o->name);
-      s += "\n";
-      for(const internal::Streaming_file* f : {&o->vertices, &o->triangles}) {
-        s += "file " + std::to_string(f->size()) + " ";
-        put_name(f->path());
+      s += "\nfiles " + std::to_string(o->parts.size()) + "\n";
+      for(const std::unique_ptr<internal::Streaming_part>& p : o->parts) {
+        s += "file " + std::to_string(p->file.size()) + " ";
+        put_name(p->file.path());
         s += "\n";
       }
     }
-    s += "vertices " + std::to_string(nv_) + "\n";
+    s += "groups " + std::to_string(group_counts_.size());
+    for(std::size_t c : group_counts_) s += " " + std::to_string(c);
+    s += "\nvertices " + std::to_string(nv_) + "\n";
     s += "triangles " + std::to_string(nt_) + "\n";
     s += "bbox ";
     put_double(xmin_); s += ' ';
@@ -311,9 +441,9 @@ public:
 
   /*!
   Continues the output of a writer at the checkpoint where `state` was
-  returned by its `checkpoint_state()`: every file is truncated to its size
-  at the checkpoint and reopened for appending. Vertices and triangles are
-  then to be passed again from number `number_of_vertices()` and
+  returned by its `checkpoint_state()`: every part file is truncated to its
+  size at the checkpoint and reopened for appending. Vertices and triangles
+  are then to be passed again from number `number_of_vertices()` and
   `number_of_triangles()` on; `close()` then gives the files an
   uninterrupted writer would have written.
 
@@ -329,29 +459,31 @@ public:
   {
     internal::Streaming_state_reader r(state);
     const internal::Streaming_recorded_state s = internal::streaming_read_state(r);
-    std::unique_ptr<Streaming_mesh_writer> w(new Streaming_mesh_writer(s.names, Resume_tag()));
+    std::unique_ptr<Streaming_mesh_writer> w(new Streaming_mesh_writer(s, Resume_tag()));
     w->check_recorded_counts(r, s);
     // Everything is checked before anything is truncated, so that a failed
     // resume leaves the files as it found them.
     for(std::size_t i = 0; i < w->outputs_.size(); ++i)
-      for(int k = 0; k < 2; ++k)
-        check_partial_file(s.files[i][k].first, s.files[i][k].second);
+      for(std::size_t k = 0; k < s.files[i].size(); ++k)
+        check_partial_file(*w->outputs_[i]->parts[k], s.files[i][k].second);
     w->truncate_and_reopen(s.files);
     w->nv_ = s.nv;
     w->nt_ = s.nt;
+    w->group_counts_ = s.group_counts;
     w->xmin_ = s.bbox[0]; w->ymin_ = s.bbox[1];
     w->xmax_ = s.bbox[2]; w->ymax_ = s.bbox[3];
     return w;
   }
 
   /*!
-  Finishes the output: closes the files, assembles each OFF, VTU and MSH
-  file from its header, its part files and its trailer, fills in the counts
-  of the `.node` and `.ele` files, makes the results durable and removes
-  the part files. Does nothing when called again.
+  Finishes the output: closes the part files, makes each final file from
+  them under a temporary name (`FINAL.part`), makes it durable, renames
+  every one into place once all are complete and removes the part files.
+  Does nothing when called again.
 
-  If it fails, the part files are kept, so that the output can still be
-  continued from the last checkpoint with `resume()`.
+  If it fails before the renaming, the part files are kept (and no final
+  file is written), so that the output can still be continued from the last
+  checkpoint with `resume()`.
 
   \throws std::runtime_error "cannot write FILE" (or "cannot read FILE") on
   an input/output error, or if an earlier write failed
@@ -365,20 +497,26 @@ public:
                                "(resume from the last checkpoint instead)");
     closing_ = true;
     guarded([&] {
-      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
-        o->vertices.close(false);
-        o->triangles.close(false);
-      }
+      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_)
+        for(const std::unique_ptr<internal::Streaming_part>& p : o->parts) p->file.close(false);
       for(const std::unique_ptr<internal::Streaming_output>& o : outputs_)
         finish(*o);
       // only now: until every output is complete, a resume needs them all
-      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
-        if(o->format == internal::Streaming_format::NODE_ELE)
-          continue;
-        std::error_code ec;
-        std::filesystem::remove(o->vertices.path(), ec);
-        std::filesystem::remove(o->triangles.path(), ec);
-      }
+      std::vector<std::string> finals;
+      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_)
+        for(const std::string& f : o->final_files(content_)) {
+          std::error_code ec;
+          std::filesystem::rename(internal::Streaming_output::temporary(f), f, ec);
+          if(ec)
+            throw std::runtime_error("cannot write " + f + " (" + ec.message() + ")");
+          finals.push_back(f);
+        }
+      internal::streaming_sync_directories(finals);
+      for(const std::unique_ptr<internal::Streaming_output>& o : outputs_)
+        for(const std::unique_ptr<internal::Streaming_part>& p : o->parts) {
+          std::error_code ec;
+          std::filesystem::remove(p->file.path(), ec);
+        }
     });
     closed_ = true;
   }
@@ -396,9 +534,12 @@ private:
   struct Resume_tag {};
 
   // Only the outputs; resume() opens the files.
-  Streaming_mesh_writer(const std::vector<std::string>& file_names, Resume_tag)
-    : file_names_(file_names)
+  Streaming_mesh_writer(const internal::Streaming_recorded_state& s, Resume_tag)
+    : file_names_(s.names)
   {
+    content_.binary = s.binary;
+    content_.tagged = s.tagged;
+    content_.attributes = s.attributes;
     try {
       make_outputs();
     } catch(const std::invalid_argument& e) {
@@ -406,16 +547,42 @@ private:
     }
   }
 
+  const char* node_tail() const
+  {
+    return content_.tagged ? internal::streaming_node_tagged_tail : internal::streaming_node_tail;
+  }
+  const char* ele_tail() const
+  {
+    return content_.has_regions() ? internal::streaming_ele_regions_tail : internal::streaming_ele_tail;
+  }
+
   void make_outputs()
   {
     for(const std::string& name : file_names_)
-      outputs_.push_back(internal::streaming_make_output(name));
-    internal::streaming_check_distinct(outputs_);
+      outputs_.push_back(internal::streaming_make_output(name, content_));
+    internal::streaming_check_distinct(outputs_, content_);
+  }
+
+  template <class T>
+  static void put_raw(internal::Streaming_file& f, T v)
+  {
+    char* c = f.reserve(sizeof(T));
+    std::memcpy(c, &v, sizeof(T));
+    f.commit(c + sizeof(T));
+  }
+
+  static void put_line(internal::Streaming_file& f, const char* s, std::size_t n)
+  {
+    char* c = f.reserve(n + 1);
+    std::memcpy(c, s, n);
+    c[n] = '\n';
+    f.commit(c + n + 1);
   }
 
   // The counts of a state against each other and against the sizes of the
   // files, which cannot hold more than a line of the shortest kind per
-  // vertex or triangle; the names of the files against those of the outputs.
+  // vertex or triangle (binary parts: exactly a record each); the files
+  // against those of the outputs.
   void check_recorded_counts(const internal::Streaming_state_reader& r,
                              const internal::Streaming_recorded_state& s) const
   {
@@ -424,49 +591,60 @@ private:
       r.corrupt("triangles without vertices");
     if(nv != 0 && !(s.bbox[0] <= s.bbox[2] && s.bbox[1] <= s.bbox[3]))
       r.corrupt("empty bounding box");
+    std::uint64_t grouped = 0;
+    for(std::size_t c : s.group_counts) grouped += c;
+    if(!s.group_counts.empty() && grouped != nt)
+      r.corrupt("the triangles of the groups do not add up to " + std::to_string(nt));
     for(std::size_t i = 0; i < outputs_.size(); ++i) {
       const internal::Streaming_output& o = *outputs_[i];
-      const internal::Streaming_file* mine[2] = {&o.vertices, &o.triangles};
-      for(int k = 0; k < 2; ++k) {
-        if(s.files[i][k].first != mine[k]->path())
+      if(s.files[i].size() != o.parts.size())
+        r.corrupt("output " + o.name + " has " + std::to_string(o.parts.size()) + " part files, not " +
+                  std::to_string(s.files[i].size()));
+      std::size_t group = 0;
+      for(std::size_t k = 0; k < o.parts.size(); ++k) {
+        const internal::Streaming_part& p = *o.parts[k];
+        if(s.files[i][k].first != p.file.path())
           r.corrupt("file " + s.files[i][k].first + " is not one of output " + o.name);
         const std::uint64_t size = s.files[i][k].second;
-        const std::uint64_t header = internal::streaming_header_size(o.format, k == 1);
-        const std::uint64_t count = (k == 0) ? nv : nt;
-        if(size < header ||
-           count > (size - header) / internal::streaming_min_line(o.format, k == 1))
-          r.corrupt("size " + std::to_string(size) + " of " + mine[k]->path() +
-                    " cannot hold " + std::to_string(count) +
-                    (k == 0 ? " vertices" : " triangles"));
+        std::uint64_t count = nv;
+        if(p.count == internal::Streaming_count::TRIANGLES) count = nt;
+        if(p.count == internal::Streaming_count::GROUP_TRIANGLES) count = s.group_counts[group++];
+        const bool fits = size >= p.header &&
+          (p.binary ? (size - p.header) / p.unit == count && (size - p.header) % p.unit == 0
+                    : count <= (size - p.header) / p.unit);
+        if(!fits)
+          r.corrupt("size " + std::to_string(size) + " of " + p.file.path() + " does not fit " +
+                    std::to_string(count) +
+                    (p.count == internal::Streaming_count::VERTICES ? " vertices" : " triangles"));
       }
     }
   }
 
   // Cuts every file back to its size at the checkpoint and continues it.
-  void truncate_and_reopen(
-    const std::vector<std::array<std::pair<std::string, std::uint64_t>, 2> >& files)
+  void truncate_and_reopen(const std::vector<std::vector<std::pair<std::string, std::uint64_t> > >& files)
   {
     for(std::size_t i = 0; i < outputs_.size(); ++i) {
       internal::Streaming_output& o = *outputs_[i];
-      internal::Streaming_file* mine[2] = {&o.vertices, &o.triangles};
-      for(int k = 0; k < 2; ++k) {
+      for(std::size_t k = 0; k < o.parts.size(); ++k) {
+        internal::Streaming_file& f = o.parts[k]->file;
         std::error_code ec;
-        std::filesystem::resize_file(mine[k]->path(), files[i][k].second, ec);
+        std::filesystem::resize_file(f.path(), files[i][k].second, ec);
         if(ec)
-          throw std::runtime_error("cannot write " + mine[k]->path());
-        mine[k]->append(files[i][k].second);
+          throw std::runtime_error("cannot write " + f.path());
+        f.append(files[i][k].second);
       }
     }
   }
 
-  static void check_partial_file(const std::string& path, std::uint64_t size)
+  static void check_partial_file(const internal::Streaming_part& p, std::uint64_t size)
   {
+    const std::string& path = p.file.path();
     std::error_code ec;
     const std::uintmax_t actual = std::filesystem::file_size(path, ec);
     if(ec || actual < size)
       throw std::runtime_error("cannot resume the streaming output: " + path +
                                " is missing or shorter than at the checkpoint");
-    if(size == 0)
+    if(size == 0 || p.binary)
       return;
     // A checkpoint always falls after a complete line. (A stream, since
     // fseek() takes a long, which has 32 bits on Windows.)
@@ -500,37 +678,73 @@ private:
     }
   }
 
+  // The final files of `o`, under their temporary names.
   void finish(internal::Streaming_output& o)
   {
     typedef internal::Streaming_format Format;
+    typedef internal::Streaming_output Output;
     if(o.format == Format::NODE_ELE) {
-      internal::streaming_patch_count(o.vertices.path(), nv_);
-      internal::streaming_patch_count(o.triangles.path(), nt_);
+      finish_node_ele(o);
       return;
     }
-    internal::Streaming_file out(o.name);
+    internal::Streaming_file out(Output::temporary(o.name));
     out.create();
     if(o.format == Format::OFF) {
       out.put("OFF\n", 4);
       out.put_uint(nv_); out.put(" ", 1); out.put_uint(nt_); out.put(" 0\n", 3);
-      internal::streaming_copy_part(out, o.vertices.path(), o.vertices.size());
-      internal::streaming_copy_part(out, o.triangles.path(), o.triangles.size());
+      copy_part(out, o.vertices());
+      copy_part(out, o.triangles());
     } else if(o.format == Format::MSH) {
-      write_msh(out, o);
+      if(content_.tagged) write_tagged_msh(out, o);
+      else write_msh(out, o);
     } else {
       write_vtu(out, o);
     }
     out.close(true);
   }
 
-  // The layout of write_gmsh_msh().
-  void write_msh(internal::Streaming_file& out, const internal::Streaming_output& o)
+  static void copy_part(internal::Streaming_file& out, const internal::Streaming_file& part)
   {
-    out.put("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-    out.put("$Entities\n0 0 1 0\n1 ");
+    internal::streaming_copy_part(out, part.path(), part.size());
+  }
+
+  // The .node and .ele parts get their counts: they are the temporary files
+  // of the final ones (no copy of the largest files); the .edge file is
+  // written from the segments.
+  void finish_node_ele(internal::Streaming_output& o)
+  {
+    typedef internal::Streaming_output Output;
+    internal::streaming_patch_count(o.vertices().path(), nv_);
+    internal::streaming_patch_count(o.triangles().path(), nt_);
+    if(!content_.tagged) return;
+    internal::Streaming_file edge(Output::temporary(o.base + ".edge"));
+    edge.create();
+    edge.put_uint(segments_.size());
+    edge.put(" 1\n");
+    for(std::size_t s = 0; s < segments_.size(); ++s) {
+      edge.put_uint(s + 1); edge.put(" ", 1);
+      edge.put_uint(segments_[s][0] + 1); edge.put(" ", 1);
+      edge.put_uint(segments_[s][1] + 1); edge.put(" ", 1);
+      put_int(edge, segment_markers_[s]);
+      edge.put("\n", 1);
+    }
+    edge.close(true);
+  }
+
+  static void put_int(internal::Streaming_file& f, long long v)
+  {
+    char* c = f.reserve(internal::streaming_max_uint_chars + 2);
+    f.commit(std::to_chars(c, c + internal::streaming_max_uint_chars + 2, v).ptr);
+  }
+
+  void put_box(internal::Streaming_file& out) const
+  {
     out.put_double(xmin_); out.put(" ", 1); out.put_double(ymin_); out.put(" 0 ", 3);
-    out.put_double(xmax_); out.put(" ", 1); out.put_double(ymax_);
-    out.put(" 0 0 0\n$EndEntities\n");
+    out.put_double(xmax_); out.put(" ", 1); out.put_double(ymax_); out.put(" 0", 2);
+  }
+
+  void put_msh_nodes(internal::Streaming_file& out, internal::Streaming_output& o)
+  {
     out.put("$Nodes\n");
     if(nv_ == 0) {
       out.put("0 0 0 0\n");
@@ -543,68 +757,160 @@ private:
         *p++ = '\n';
         out.commit(p);
       }
-      internal::streaming_copy_part(out, o.vertices.path(), o.vertices.size());
+      copy_part(out, o.vertices());
     }
-    out.put("$EndNodes\n$Elements\n");
+    out.put("$EndNodes\n");
+  }
+
+  // The layout of write_gmsh_msh().
+  void write_msh(internal::Streaming_file& out, internal::Streaming_output& o)
+  {
+    out.put("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+    out.put("$Entities\n0 0 1 0\n1 ");
+    put_box(out);
+    out.put(" 0 0\n$EndEntities\n");
+    put_msh_nodes(out, o);
+    out.put("$Elements\n");
     if(nt_ == 0) {
       out.put("0 0 0 0\n");
     } else {
       out.put("1 "); out.put_uint(nt_); out.put(" 1 "); out.put_uint(nt_);
       out.put("\n2 1 2 "); out.put_uint(nt_); out.put("\n");
-      internal::streaming_copy_part(out, o.triangles.path(), o.triangles.size());
+      copy_part(out, o.triangles());
     }
     out.put("$EndElements\n");
   }
 
-  // ASCII, with 64-bit integers whatever std::size_t is, so that the file
-  // does not depend on the platform that wrote it.
-  void write_vtu(internal::Streaming_file& out, const internal::Streaming_output& o)
+  // The layout of write_gmsh_msh() with markers and regions: a curve per
+  // segment marker, a surface per region attribute that has triangles (one,
+  // "domain", without regions), each in its physical group.
+  void write_tagged_msh(internal::Streaming_file& out, internal::Streaming_output& o)
   {
-    out.put("<?xml version=\"1.0\"?>\n"
-            "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" "
-            "header_type=\"UInt64\">\n"
-            "  <UnstructuredGrid>\n"
-            "    <Piece NumberOfPoints=\"");
-    out.put_uint(nv_);
-    out.put("\" NumberOfCells=\"");
-    out.put_uint(nt_);
-    out.put("\">\n"
-            "      <Points>\n"
-            "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-    internal::streaming_copy_part(out, o.vertices.path(), o.vertices.size());
-    out.put("        </DataArray>\n"
-            "      </Points>\n"
-            "      <Cells>\n"
-            "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-    internal::streaming_copy_part(out, o.triangles.path(), o.triangles.size());
-    out.put("        </DataArray>\n"
-            "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-    for(std::uint64_t i = 1; i <= nt_; ++i) {
-      char* p = out.reserve(internal::streaming_max_uint_chars + 1);
-      p = internal::streaming_format_uint(p, 3 * i);
-      *p++ = '\n';
-      out.commit(p);
+    std::map<double, std::vector<std::size_t> > by_marker, by_attribute;
+    for(std::size_t s = 0; s < segments_.size(); ++s) by_marker[segment_markers_[s]].push_back(s);
+    // the items of a surface: its group (its part file)
+    if(content_.has_regions()) {
+      for(std::size_t g = 0; g < content_.attributes.size(); ++g)
+        if(group_counts_[g] > 0) by_attribute[content_.attributes[g]].push_back(g);
+    } else if(nt_ > 0) {
+      by_attribute[1.].push_back(0);
     }
-    out.put("        </DataArray>\n"
-            "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for(std::uint64_t i = 0; i < nt_; ++i) {
-      char* p = out.reserve(2);
-      p[0] = '5';
-      p[1] = '\n';
-      out.commit(p + 2);
+    std::vector<internal::Msh_group> curves = internal::msh_groups(by_marker, "marker_");
+    std::vector<internal::Msh_group> surfaces = internal::msh_groups(by_attribute, "region_");
+    if(!content_.has_regions() && !surfaces.empty()) surfaces[0].name = "domain";
+
+    out.put("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+    out.put("$PhysicalNames\n"); out.put_uint(curves.size() + surfaces.size()); out.put("\n");
+    for(int dim = 1; dim <= 2; ++dim)
+      for(const internal::Msh_group& g : dim == 1 ? curves : surfaces) {
+        out.put(dim == 1 ? "1 " : "2 "); put_int(out, g.physical);
+        out.put(" \""); out.put(g.name); out.put("\"\n");
+      }
+    out.put("$EndPhysicalNames\n");
+    out.put("$Entities\n0 "); out.put_uint(curves.size()); out.put(" "); out.put_uint(surfaces.size());
+    out.put(" 0\n");
+    for(int dim = 1; dim <= 2; ++dim) {
+      const std::vector<internal::Msh_group>& groups = dim == 1 ? curves : surfaces;
+      for(std::size_t e = 0; e < groups.size(); ++e) {
+        out.put_uint(e + 1); out.put(" ", 1); put_box(out);
+        out.put(" 1 "); put_int(out, groups[e].physical); out.put(" 0\n");
+      }
     }
-    out.put("        </DataArray>\n"
-            "      </Cells>\n"
-            "    </Piece>\n"
-            "  </UnstructuredGrid>\n"
-            "</VTKFile>\n");
+    out.put("$EndEntities\n");
+    if(surfaces.empty()) {
+      out.put("$Nodes\n0 0 0 0\n$EndNodes\n");
+    } else {
+      put_msh_nodes(out, o);
+    }
+    const std::uint64_t ne = segments_.size() + nt_;
+    out.put("$Elements\n");
+    if(ne == 0) {
+      out.put("0 0 0 0\n");
+    } else {
+      out.put_uint(curves.size() + surfaces.size()); out.put(" "); out.put_uint(ne);
+      out.put(" 1 "); out.put_uint(ne); out.put("\n");
+      for(std::size_t c = 0; c < curves.size(); ++c) {
+        out.put("1 "); out.put_uint(c + 1); out.put(" 1 "); out.put_uint(curves[c].items.size()); out.put("\n");
+        for(std::size_t s : curves[c].items) {
+          out.put_uint(nt_ + s + 1); out.put(" ", 1);
+          out.put_uint(segments_[s][0] + 1); out.put(" ", 1);
+          out.put_uint(segments_[s][1] + 1); out.put("\n", 1);
+        }
+      }
+      for(std::size_t s = 0; s < surfaces.size(); ++s) {
+        std::uint64_t n = 0;
+        for(std::size_t g : surfaces[s].items) n += content_.has_regions() ? group_counts_[g] : nt_;
+        out.put("2 "); out.put_uint(s + 1); out.put(" 2 "); out.put_uint(n); out.put("\n");
+        for(std::size_t g : surfaces[s].items) copy_part(out, o.triangles(g));
+      }
+    }
+    out.put("$EndElements\n");
+  }
+
+  // The layout of write_mesh_VTU() (Vtu_layout.h), in the numbering received.
+  void write_vtu(internal::Streaming_file& out, internal::Streaming_output& o)
+  {
+    typedef internal::Vtu_section Section;
+    const bool binary = content_.binary;
+    const std::uint64_t nt = nt_, ns = content_.tagged ? segments_.size() : 0;
+    // one line or one raw value per item
+    auto put_value = [&out, binary](auto v) {
+      if(binary) {
+        put_raw(out, v);
+      } else {
+        char b[internal::streaming_max_double_chars + 1];
+        char* e = std::to_chars(b, b + sizeof(b) - 1, v).ptr;
+        *e++ = '\n';
+        out.put(b, static_cast<std::size_t>(e - b));
+      }
+    };
+    std::vector<internal::Vtu_array> arrays;
+    arrays.push_back({Section::POINTS, "type=\"Float64\" NumberOfComponents=\"3\"", 24 * nv_,
+                      [&] { copy_part(out, o.vertices()); }});
+    arrays.push_back({Section::CELLS, "type=\"Int64\" Name=\"connectivity\"", 8 * (3 * nt + 2 * ns), [&] {
+      copy_part(out, o.triangles());
+      for(std::uint64_t s = 0; s < ns; ++s) {
+        if(binary) {
+          put_raw(out, std::int64_t(segments_[s][0]));
+          put_raw(out, std::int64_t(segments_[s][1]));
+        } else {
+          out.put_uint(segments_[s][0]); out.put(" ", 1); out.put_uint(segments_[s][1]); out.put("\n", 1);
+        }
+      }
+    }});
+    arrays.push_back({Section::CELLS, "type=\"Int64\" Name=\"offsets\"", 8 * (nt + ns), [&] {
+      for(std::uint64_t t = 1; t <= nt; ++t) put_value(std::int64_t(3 * t));
+      for(std::uint64_t s = 1; s <= ns; ++s) put_value(std::int64_t(3 * nt + 2 * s));
+    }});
+    arrays.push_back({Section::CELLS, "type=\"UInt8\" Name=\"types\"", nt + ns, [&] {
+      for(std::uint64_t t = 0; t < nt; ++t) binary ? put_raw(out, std::uint8_t(5)) : out.put("5\n", 2);
+      for(std::uint64_t s = 0; s < ns; ++s) binary ? put_raw(out, std::uint8_t(3)) : out.put("3\n", 2);
+    }});
+    if(content_.tagged) {
+      arrays.push_back({Section::POINT_DATA, "type=\"Int32\" Name=\"marker\"", 4 * nv_,
+                        [&] { copy_part(out, o.vertex_markers->file); }});
+      arrays.push_back({Section::CELL_DATA, "type=\"Int32\" Name=\"marker\"", 4 * (nt + ns), [&] {
+        for(std::uint64_t t = 0; t < nt; ++t) put_value(std::int32_t(0));
+        for(int m : segment_markers_) put_value(std::int32_t(m));
+      }});
+      if(content_.has_regions())
+        arrays.push_back({Section::CELL_DATA, "type=\"Float64\" Name=\"region\"", 8 * (nt + ns), [&] {
+          copy_part(out, o.triangle_attributes->file);
+          for(std::uint64_t s = 0; s < ns; ++s) put_value(0.);
+        }});
+    }
+    internal::vtu_write(out, nv_, nt + ns, arrays, binary);
   }
 
   std::vector<std::string> file_names_;
+  internal::Streaming_content content_;
   std::vector<std::unique_ptr<internal::Streaming_output> > outputs_;
   std::vector<std::string> created_files_; // whose directory entries are not synced yet
   std::size_t nv_ = 0;
   std::size_t nt_ = 0;
+  std::vector<std::size_t> group_counts_; // triangles per region attribute
+  std::vector<std::array<std::uint64_t, 2> > segments_;
+  std::vector<int> segment_markers_;
   double xmin_ = 0, ymin_ = 0, xmax_ = 0, ymax_ = 0;
   bool closing_ = false; // close() was called: nothing more may be added
   bool closed_ = false;  // close() succeeded

@@ -172,7 +172,9 @@ void Streaming_output<Front, S, V>::hand_to_sink(const std::vector<Face_handle>&
     visitor_.on_face_finished(k.face);
     std::array<std::size_t, 3> ids;
     for(int i = 0; i < 3; ++i) ids[i] = output_vertex(k.face->vertex((k.first + i) % 3));
-    stream_.sink->add_triangle(ids[0], ids[1], ids[2]);
+    stream_.sink->add_finished_triangle(ids[0], ids[1], ids[2], k.face->vertex(k.first)->point(),
+                                        k.face->vertex((k.first + 1) % 3)->point(),
+                                        k.face->vertex((k.first + 2) % 3)->point());
     ++stream_.triangles_output;
   }
 }

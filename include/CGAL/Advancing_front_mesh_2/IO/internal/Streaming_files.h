@@ -232,65 +232,160 @@ private:
   std::uint64_t size_ = 0;
 };
 
-// One output given by the user, and the two files written while streaming:
-// the vertex and triangle part files assembled by close() for OFF, VTU and
-// MSH, whose headers hold counts and whose vertices come before the
-// elements; the .node and .ele files themselves for Triangle's format,
-// whose only count is patched in place.
-struct Streaming_output
+// What a streamed output records, beyond the mesh: markers (vertex and
+// segment markers, segments) and regions (the attribute of each triangle,
+// one of `attributes`, sorted and distinct). VTU arrays are binary unless
+// `binary` is false.
+struct Streaming_content
 {
-  Streaming_output(const std::string& given, Streaming_format f,
-                   const std::string& vertex_file, const std::string& triangle_file)
-    : name(given), format(f), vertices(vertex_file), triangles(triangle_file)
-  {}
+  bool binary = true;
+  bool tagged = false;
+  std::vector<double> attributes; // empty: no regions
 
-  std::string name;
-  Streaming_format format;
-  Streaming_file vertices;
-  Streaming_file triangles;
+  bool has_regions() const { return !attributes.empty(); }
 };
 
-inline std::unique_ptr<Streaming_output> streaming_make_output(const std::string& name)
+// What a part file holds, for the checks of a resume: per vertex or per
+// triangle (of one group of Gmsh surfaces, whose own count is recorded),
+// lines of at least `unit` bytes or records of exactly `unit` bytes, after
+// `header` bytes written at creation.
+enum class Streaming_count { VERTICES, TRIANGLES, GROUP_TRIANGLES };
+
+struct Streaming_part
+{
+  Streaming_part(const std::string& path, Streaming_count c, bool is_binary, std::uint64_t u, std::uint64_t h = 0)
+    : file(path), count(c), binary(is_binary), unit(u), header(h)
+  {}
+  Streaming_file file;
+  Streaming_count count;
+  bool binary;
+  std::uint64_t unit;
+  std::uint64_t header;
+};
+
+// One output given by the user and the part files written while streaming,
+// beside it; close() makes the final files from them under temporary names
+// (FINAL.part; the .node and .ele parts are those of their finals, patched
+// in place) and renames them into place only when all are complete, so that
+// an interrupted run leaves no half-written file under a final name.
+//
+// Parts: the vertices first; then the triangles (one part per region
+// attribute for a tagged Gmsh file, whose surfaces are grouped by
+// attribute); then, for VTU, the vertex markers and the triangle attributes
+// when the output has them. Triangle's .node and .ele are their own parts,
+// their counts patched in place at the end.
+struct Streaming_output
+{
+  std::string name;
+  Streaming_format format;
+  std::string base; // .node/.ele: the path without its extension
+  std::vector<std::unique_ptr<Streaming_part> > parts;
+  std::size_t triangle_parts = 1;
+  Streaming_part* vertex_markers = nullptr;      // VTU, tagged
+  Streaming_part* triangle_attributes = nullptr; // VTU, with regions
+
+  Streaming_file& vertices() { return parts[0]->file; }
+  Streaming_file& triangles(std::size_t group = 0) { return parts[1 + group]->file; }
+
+  // the finished files, and the temporary names they are made under
+  std::vector<std::string> final_files(const Streaming_content& c) const
+  {
+    if(format != Streaming_format::NODE_ELE) return {name};
+    std::vector<std::string> r{base + ".node", base + ".ele"};
+    if(c.tagged) r.push_back(base + ".edge");
+    return r;
+  }
+  static std::string temporary(const std::string& final_file) { return final_file + ".part"; }
+};
+
+constexpr const char* streaming_node_tail = " 2 0 0\n";
+constexpr const char* streaming_node_tagged_tail = " 2 0 1\n";
+constexpr const char* streaming_ele_tail = " 3 0\n";
+constexpr const char* streaming_ele_regions_tail = " 3 1\n";
+
+inline std::unique_ptr<Streaming_output> streaming_make_output(const std::string& name, const Streaming_content& c)
 {
   const std::string ext = mesh_lower_extension(name);
-  Streaming_format format;
+  std::unique_ptr<Streaming_output> o(new Streaming_output);
+  o->name = name;
   if(ext == "off")
-    format = Streaming_format::OFF;
+    o->format = Streaming_format::OFF;
   else if(ext == "vtu")
-    format = Streaming_format::VTU;
+    o->format = Streaming_format::VTU;
   else if(ext == "node" || ext == "ele")
-    format = Streaming_format::NODE_ELE;
+    o->format = Streaming_format::NODE_ELE;
   else if(ext == "msh")
-    format = Streaming_format::MSH;
+    o->format = Streaming_format::MSH;
   else
     throw std::invalid_argument("Streaming_mesh_writer: the format of '" + name +
                                 "' cannot be streamed (streamed formats: .off, .vtu, "
                                 ".node/.ele, .msh)");
-  if(format == Streaming_format::NODE_ELE) {
-    const std::string base = name.substr(0, name.size() - ext.size() - 1);
-    return std::unique_ptr<Streaming_output>(
-      new Streaming_output(name, format, base + ".node", base + ".ele"));
+  auto add = [&o](const std::string& path, Streaming_count count, bool binary, std::uint64_t unit,
+                  std::uint64_t header = 0) {
+    o->parts.emplace_back(new Streaming_part(path, count, binary, unit, header));
+    return o->parts.back().get();
+  };
+  // the fewest bytes of a line: "0 0 0\n", "3 0 0 0\n", "0 0 0\n", "1 0 0 0\n", "0\n"
+  switch(o->format) {
+  case Streaming_format::OFF:
+    add(name + ".vertices.part", Streaming_count::VERTICES, false, 6);
+    add(name + ".triangles.part", Streaming_count::TRIANGLES, false, 8);
+    break;
+  case Streaming_format::NODE_ELE: {
+    o->base = name.substr(0, name.size() - ext.size() - 1);
+    const std::uint64_t node_header =
+      streaming_count_width + std::strlen(c.tagged ? streaming_node_tagged_tail : streaming_node_tail);
+    const std::uint64_t ele_header =
+      streaming_count_width + std::strlen(c.has_regions() ? streaming_ele_regions_tail : streaming_ele_tail);
+    add(o->base + ".node.part", Streaming_count::VERTICES, false, 6, node_header);
+    add(o->base + ".ele.part", Streaming_count::TRIANGLES, false, 8, ele_header);
+    break;
   }
-  return std::unique_ptr<Streaming_output>(
-    new Streaming_output(name, format, name + ".vertices.part", name + ".triangles.part"));
+  case Streaming_format::MSH:
+    add(name + ".vertices.part", Streaming_count::VERTICES, false, 6);
+    if(c.tagged && c.has_regions()) {
+      o->triangle_parts = c.attributes.size();
+      for(std::size_t g = 0; g < c.attributes.size(); ++g)
+        add(name + ".triangles." + std::to_string(g) + ".part", Streaming_count::GROUP_TRIANGLES, false, 8);
+    } else {
+      add(name + ".triangles.part", Streaming_count::TRIANGLES, false, 8);
+    }
+    break;
+  case Streaming_format::VTU:
+    add(name + ".vertices.part", Streaming_count::VERTICES, c.binary, c.binary ? 24 : 6);
+    add(name + ".triangles.part", Streaming_count::TRIANGLES, c.binary, c.binary ? 24 : 6);
+    if(c.tagged)
+      o->vertex_markers = add(name + ".markers.part", Streaming_count::VERTICES, c.binary, c.binary ? 4 : 2);
+    if(c.tagged && c.has_regions())
+      o->triangle_attributes = add(name + ".regions.part", Streaming_count::TRIANGLES, c.binary, c.binary ? 8 : 2);
+    break;
+  }
+  return o;
 }
 
-// Every file an output writes, the assembled one included.
-inline std::vector<std::string> streaming_files_of(const Streaming_output& o)
+// Every file an output writes: its parts, the finished files and their
+// temporary names.
+inline std::vector<std::string> streaming_files_of(const Streaming_output& o, const Streaming_content& c)
 {
-  std::vector<std::string> r{o.vertices.path(), o.triangles.path()};
-  if(o.format != Streaming_format::NODE_ELE)
-    r.push_back(o.name);
+  std::vector<std::string> r;
+  for(const std::unique_ptr<Streaming_part>& p : o.parts) r.push_back(p->file.path());
+  for(const std::string& f : o.final_files(c)) {
+    r.push_back(f);
+    // the .node and .ele parts are the temporary files of their finals
+    if(std::find(r.begin(), r.end(), Streaming_output::temporary(f)) == r.end())
+      r.push_back(Streaming_output::temporary(f));
+  }
   return r;
 }
 
 // Two outputs writing the same file would garble it: "a.node" and "a.ele"
 // are the same pair of files, "a.off" given twice is the same file.
-inline void streaming_check_distinct(const std::vector<std::unique_ptr<Streaming_output> >& outputs)
+inline void streaming_check_distinct(const std::vector<std::unique_ptr<Streaming_output> >& outputs,
+                                     const Streaming_content& c)
 {
   std::vector<std::pair<std::string, std::string> > files; // normalized, given
   for(const std::unique_ptr<Streaming_output>& o : outputs)
-    for(const std::string& f : streaming_files_of(*o))
+    for(const std::string& f : streaming_files_of(*o, c))
       files.emplace_back(std::filesystem::path(f).lexically_normal().string(), o->name);
   std::sort(files.begin(), files.end());
   for(std::size_t i = 1; i < files.size(); ++i)
@@ -311,9 +406,6 @@ inline void streaming_put_count_line(Streaming_file& f, std::uint64_t count, con
   f.put(line, streaming_count_width);
   f.put(tail, std::strlen(tail));
 }
-
-constexpr const char* streaming_node_tail = " 2 0 0\n";
-constexpr const char* streaming_ele_tail = " 3 0\n";
 
 // Rewrites the reserved count of a closed .node or .ele file.
 inline void streaming_patch_count(const std::string& path, std::uint64_t count)
@@ -383,24 +475,6 @@ inline void streaming_sync_directories(const std::vector<std::string>& files)
 #else
   static_cast<void>(files);
 #endif
-}
-
-// The smallest number of bytes a vertex or triangle line takes in each
-// file ("0 0 0\n", "3 0 0 0\n", ...), and the header written at creation:
-// with them a corrupt count far beyond what the recorded file sizes can
-// hold is refused instead of being trusted.
-inline std::uint64_t streaming_min_line(Streaming_format f, bool triangles)
-{
-  if(!triangles)
-    return 6;
-  return f == Streaming_format::VTU ? 6 : 8;
-}
-
-inline std::uint64_t streaming_header_size(Streaming_format f, bool triangles)
-{
-  if(f != Streaming_format::NODE_ELE)
-    return 0;
-  return streaming_count_width + std::strlen(triangles ? streaming_ele_tail : streaming_node_tail);
 }
 
 } // namespace internal

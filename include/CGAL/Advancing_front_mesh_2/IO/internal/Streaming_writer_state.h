@@ -53,6 +53,18 @@ public:
     pos_ += n;
   }
 
+  // consumes `literal` if the text continues with it
+  bool try_expect(const char* literal)
+  {
+    const std::size_t n = std::strlen(literal);
+    if(s_.compare(pos_, n, literal) != 0)
+      return false;
+    pos_ += n;
+    return true;
+  }
+
+  std::size_t position() const { return pos_; }
+
   std::uint64_t read_uint(const char* what)
   {
     const char* b = s_.data() + pos_;
@@ -104,15 +116,18 @@ private:
   std::size_t pos_ = 0;
 };
 
-constexpr const char* streaming_state_magic = "CGAL Advancing_front_mesh_2 Streaming_mesh_writer state 1\n";
+constexpr const char* streaming_state_magic = "CGAL Advancing_front_mesh_2 Streaming_mesh_writer state 2\n";
 
 // The text of checkpoint_state() as read back, its syntax checked; whether
 // it matches the files is for resume() to check.
 struct Streaming_recorded_state
 {
+  bool binary = true, tagged = false;
+  std::vector<double> attributes;
   std::vector<std::string> names; // the outputs, as given
-  // per output, its vertex and its triangle file, with their sizes
-  std::vector<std::array<std::pair<std::string, std::uint64_t>, 2> > files;
+  // per output, its part files with their sizes
+  std::vector<std::vector<std::pair<std::string, std::uint64_t> > > files;
+  std::vector<std::size_t> group_counts; // triangles per region attribute
   std::size_t nv = 0, nt = 0;
   double bbox[4] = {0, 0, 0, 0}; // xmin, ymin, xmax, ymax
 };
@@ -121,28 +136,52 @@ inline Streaming_recorded_state streaming_read_state(Streaming_state_reader& r)
 {
   Streaming_recorded_state s;
   r.expect(streaming_state_magic, "the first line of a streaming writer state");
-  r.expect("outputs ", "'outputs'");
+  r.expect("content ", "'content'");
+  const std::uint64_t binary = r.read_uint("VTU encoding");
+  r.expect(" ", "space");
+  const std::uint64_t tagged = r.read_uint("tags");
+  if(binary > 1 || tagged > 1) r.corrupt("bad content flags");
+  s.binary = binary == 1;
+  s.tagged = tagged == 1;
+  r.expect(" ", "space");
+  // No reserve() from a count read: each item read consumes the text, so a
+  // corrupt count fails at the end of the text, not in the allocator.
+  const std::uint64_t n_attributes = r.read_uint("number of region attributes");
+  for(std::uint64_t i = 0; i < n_attributes; ++i) {
+    r.expect(" ", "space");
+    s.attributes.push_back(r.read_double("region attribute"));
+    if(i > 0 && !(s.attributes[i - 1] < s.attributes[i])) r.corrupt("region attributes not sorted");
+  }
+  if(n_attributes > 0 && !s.tagged) r.corrupt("regions without tags");
+  r.expect("\noutputs ", "'outputs'");
   const std::uint64_t n_outputs = r.read_uint("number of outputs");
   r.expect("\n", "end of line");
   if(n_outputs == 0)
     r.corrupt("no output");
-  // No reserve(n_outputs): each output read consumes the text, so a
-  // corrupt count fails at the end of the text, not in the allocator.
   for(std::uint64_t i = 0; i < n_outputs; ++i) {
     r.expect("output ", "'output'");
     s.names.push_back(r.read_name("length of an output name"));
+    r.expect("\nfiles ", "'files'");
+    const std::uint64_t n_files = r.read_uint("number of files");
     r.expect("\n", "end of line");
-    std::array<std::pair<std::string, std::uint64_t>, 2> of;
-    for(int k = 0; k < 2; ++k) {
+    std::vector<std::pair<std::string, std::uint64_t> > of;
+    for(std::uint64_t k = 0; k < n_files; ++k) {
       r.expect("file ", "'file'");
-      of[k].second = r.read_uint("file size");
+      const std::uint64_t size = r.read_uint("file size");
       r.expect(" ", "space");
-      of[k].first = r.read_name("length of a file name");
+      of.emplace_back(r.read_name("length of a file name"), size);
       r.expect("\n", "end of line");
     }
     s.files.push_back(of);
   }
-  r.expect("vertices ", "'vertices'");
+  r.expect("groups ", "'groups'");
+  const std::uint64_t n_groups = r.read_uint("number of groups");
+  if(n_groups != n_attributes) r.corrupt("a group count per region attribute expected");
+  for(std::uint64_t g = 0; g < n_groups; ++g) {
+    r.expect(" ", "space");
+    s.group_counts.push_back(r.read_size("triangles of a group"));
+  }
+  r.expect("\nvertices ", "'vertices'");
   s.nv = r.read_size("number of vertices");
   r.expect("\ntriangles ", "'triangles'");
   s.nt = r.read_size("number of triangles");
