@@ -6,6 +6,7 @@ directory) and SHARED (../shared/data, may be empty).
 """
 import os
 import subprocess
+import sys
 
 import meshio
 import numpy as np
@@ -175,3 +176,42 @@ def test_errors():
         afmesh_2.mesh(square, sides, [[5, 5]], size=0.1)
     with pytest.raises(ValueError, match="kernel"):
         afmesh_2.mesh(square, sides, size=0.1, kernel="float")
+
+
+def test_example_channel_with_inclusion():
+    """The example script runs and writes what it says: a valid mesh, the inclusion's triangles in region 2,
+    every boundary edge with the marker of its side."""
+    example = os.path.join(os.path.dirname(__file__), "..", "..", "..", "examples", "Advancing_front_mesh_2", "python",
+                           "examples", "channel_with_inclusion.py")
+    out = os.path.join(WORK, "channel.vtu")
+    r = run(sys.executable, example, out)
+    assert "region 2:" in r.stdout and "wrote" in r.stdout
+    m = meshio.read(out)
+    points, triangles, lines = m.points[:, :2], m.cells_dict["triangle"], m.cells_dict["line"]
+    # valid under the checker, against the boundary the file holds
+    poly = os.path.join(WORK, "channel.poly")
+    with open(poly, "w") as f:
+        f.write("%d 2 0 0\n" % len(points))
+        for i, p in enumerate(points):
+            f.write("%d %.17g %.17g\n" % (i + 1, p[0], p[1]))
+        f.write("%d 0\n" % len(lines))
+        for i, s in enumerate(lines):
+            f.write("%d %d %d\n" % (i + 1, s[0] + 1, s[1] + 1))
+        f.write("0\n")
+    off = os.path.join(WORK, "channel.off")
+    with open(off, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
+        for p in points:
+            f.write("%.17g %.17g 0\n" % (p[0], p[1]))
+        for t in triangles:
+            f.write("3 %d %d %d\n" % tuple(t))
+    run(CHECK, poly, off)
+    centre = points[triangles].mean(axis=1)
+    in_circle = np.hypot(centre[:, 0] - 1, centre[:, 1] - 0.5) < 0.2
+    assert np.array_equal(m.cell_data_dict["region"]["triangle"], np.where(in_circle, 2.0, 1.0))
+    a, b = points[lines[:, 0]], points[lines[:, 1]]
+    marker = m.cell_data_dict["marker"]["line"]
+    expected = np.where((a[:, 0] == 0) & (b[:, 0] == 0), 1,
+                        np.where((a[:, 0] == 4) & (b[:, 0] == 4), 2,
+                                 np.where(np.abs(np.hypot(a[:, 0] - 1, a[:, 1] - 0.5) - 0.2) < 1e-9, 4, 3)))
+    assert np.array_equal(marker, expected)
