@@ -10,8 +10,10 @@
 # installed package (a build test) in the plain Debug build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# GDAL (libgdal-dev, and gdal-bin's ogr2ogr to make test inputs) is optional for users; the tests install it
+# so that the OGR inputs are tested (scripts/demo.sh does without it)
 bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gmsh pybind11-dev python3-numpy \
-  python3-pytest
+  python3-pytest libgdal-dev gdal-bin
 jobs=${AFM_JOBS:-2}
 for variant in debug asan; do
   sanitize=OFF models=OFF package=ON

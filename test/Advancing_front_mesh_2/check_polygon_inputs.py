@@ -1,24 +1,34 @@
 #!/usr/bin/env python3
-"""Polygons from GIS formats: GeoJSON and WKT inputs of afmesh_2.
+"""Polygons from GIS formats, GeoJSON and WKT, and boundaries from Gmsh: inputs of afmesh_2.
 
 A real coastline (MESH2D's Lake Superior from the shared data: a shoreline
 and six islands) is written as a GeoJSON FeatureCollection and as a WKT
-POLYGON by this script, meshed from both, and checked: the independent
+POLYGON by this script (and, when afmesh_2 was built with GDAL, as a
+Shapefile and a GeoPackage by GDAL's ogr2ogr), meshed from each, and
+checked: the independent
 validity checker on the mesh and the boundary afmesh_2 writes, the same
-triangles from both formats, and the meshed area equal to the shoreline's
+triangles from GeoJSON, WKT and the GeoPackage (the Shapefile's rings
+are stored in another order: as many triangles), and the meshed area equal to the shoreline's
 minus the islands' (shoelace formula here, independent of the mesher). A
-MULTIPOLYGON with an island inside a hole, and malformed files (each
-refused with exit code 1 and a message naming the file), complete it.
+MULTIPOLYGON with an island inside a hole, a square with a hole drawn with
+Gmsh's Python API and saved as a 1D mesh in MSH 4.1 and 2.2 (when
+python3-gmsh is installed), and malformed files (each refused with exit
+code 1 and a message naming the file), complete it.
 
 usage: check_polygon_inputs.py AFMESH CHECK WORK_DIR SHARED_DATA_DIR
 """
 import json
 import os
+import shutil
+import subprocess
 import sys
 
 from cli_checks import check, finish, run
 
 AFMESH, CHECK, WORK, SHARED = sys.argv[1:5]
+# built with GDAL (afmesh_2 --version says so): OGR sources are read, made here with GDAL's ogr2ogr
+HAS_GDAL = "without GDAL" not in subprocess.run([AFMESH, "--version"], capture_output=True, text=True).stdout
+OGR2OGR = shutil.which("ogr2ogr") or "ogr2ogr (gdal-bin) is needed with GDAL"
 os.makedirs(WORK, exist_ok=True)
 
 
@@ -83,7 +93,16 @@ if os.path.exists(lake):
     w = os.path.join(WORK, "lake.wkt")
     open(w, "w").write("# Lake Superior, from MESH2D\nPOLYGON(" + ",".join(wkt_ring(l) for l in loops) + ")\n")
     expected_area = abs(shoelace(loops[0])) - sum(abs(shoelace(l)) for l in loops[1:])
-    for src, name in ((g, "lake_geojson"), (w, "lake_wkt")):
+    sources = [(g, "lake_geojson"), (w, "lake_wkt")]
+    if HAS_GDAL:
+        # the same polygon as a Shapefile and a GeoPackage, written by GDAL's ogr2ogr, read through GDAL
+        for ext, driver in (("shp", "ESRI Shapefile"), ("gpkg", "GPKG")):
+            out = os.path.join(WORK, "lake." + ext)
+            if os.path.exists(out):
+                os.remove(out)
+            run(OGR2OGR, "-f", driver, out, g)
+            sources.append((out, "lake_" + ext))
+    for src, name in sources:
         base = os.path.join(WORK, name)
         run(AFMESH, src, "--size", "0.1", "-o", base + ".off", "-o", base + ".poly", "-o", base + ".node")
         run(CHECK, base + ".poly", base + ".off")
@@ -98,6 +117,14 @@ if os.path.exists(lake):
         check(int(rows[n + 2 + ns][0]) == 6, "%s: six holes, the islands (%s)" % (name, rows[n + 2 + ns][0]))
     check(node_text(os.path.join(WORK, "lake_geojson")) == node_text(os.path.join(WORK, "lake_wkt")),
           "lake: the same mesh from GeoJSON and from WKT")
+    if HAS_GDAL:
+        # a GeoPackage keeps the rings as given; a Shapefile stores the outer ring clockwise, so its points
+        # come in another order, and the mesh, of the same domain (area and boundary checked above), differs
+        check(node_text(os.path.join(WORK, "lake_gpkg")) == node_text(os.path.join(WORK, "lake_geojson")),
+              "lake: the same mesh from the GeoPackage as from GeoJSON")
+        nt_shp, nt_json = mesh_area(os.path.join(WORK, "lake_shp.off"))[1], mesh_area(os.path.join(WORK, "lake_geojson.off"))[1]
+        check(abs(nt_shp - nt_json) <= 0.01 * nt_json, "lake: as many triangles from the Shapefile (%d, %d)" %
+              (nt_shp, nt_json))
 else:
     print("lake.msh not found under", SHARED, "- the coastline part is skipped")
 
@@ -114,6 +141,61 @@ run(AFMESH, m, "--size", "0.2", "-o", base + ".off", "-o", base + ".poly")
 run(CHECK, base + ".poly", base + ".off")
 area, _ = mesh_area(base + ".off")
 check(abs(area - (16 - 4 + 1 + 2)) < 1e-12, "multi: meshed area %.15g, expected 15" % area)
+
+# --- a Gmsh 1D mesh: a square with a hole, its sides in the physical groups 3 (outer) and 7 (hole), ---------
+# meshed along its curves at the size then asked of afmesh_2, saved in MSH 4.1 (Gmsh's default) and 2.2
+try:
+    import gmsh
+except ImportError:
+    gmsh = None
+if gmsh is not None:
+    msh41, msh22, msh_binary = (os.path.join(WORK, n) for n in ("square41.msh", "square22.msh", "binary.msh"))
+    gmsh.initialize(["", "-v", "0"])
+    try:
+        geo = gmsh.model.geo
+
+        def gmsh_square(x0, y0, x1, y1, lc):
+            p = [geo.addPoint(x, y, 0, lc) for x, y in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+            return [geo.addLine(p[i], p[(i + 1) % 4]) for i in range(4)]
+
+        outer, inner = gmsh_square(0, 0, 1, 1, 0.05), gmsh_square(0.4, 0.4, 0.6, 0.6, 0.05)
+        geo.addPlaneSurface([geo.addCurveLoop(outer), geo.addCurveLoop(inner)])
+        geo.synchronize()
+        gmsh.model.addPhysicalGroup(1, outer, 3)
+        gmsh.model.addPhysicalGroup(1, inner, 7)
+        gmsh.model.mesh.generate(1)
+        gmsh.write(msh41)
+        gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
+        gmsh.write(msh22)
+        gmsh.option.setNumber("Mesh.Binary", 1)
+        gmsh.write(msh_binary)
+    finally:
+        gmsh.finalize()
+    shutil.copyfile(msh41, os.path.join(WORK, "SQUARE.MSH"))
+    for src, name in ((msh41, "gmsh41"), (msh22, "gmsh22"), (os.path.join(WORK, "SQUARE.MSH"), "gmsh_upper")):
+        base = os.path.join(WORK, name)
+        r = run(AFMESH, src, "--size", "0.05", "-o", base + ".off", "-o", base + ".poly")
+        check(r.stderr == "", "%s: unexpected message: %s" % (name, r.stderr))
+        run(CHECK, base + ".poly", base + ".off")
+        area, nt = mesh_area(base + ".off")
+        check(abs(area - 0.96) < 1e-12, "%s: meshed area %.15g, expected 0.96" % (name, area))
+        # the boundary written back: 96 segments, the physical groups as their markers
+        rows = [l.split() for l in open(base + ".poly") if l.split()]
+        n = int(rows[0][0])
+        pts = {int(r[0]): (float(r[1]), float(r[2])) for r in rows[1:1 + n]}
+        ns = int(rows[n + 1][0])
+        check(ns == 96 and rows[n + 1][1] == "1", "%s: %s segments with markers, expected 96" % (name, rows[n + 1]))
+        for r in rows[n + 2:n + 2 + ns]:
+            a, b = pts[int(r[1])], pts[int(r[2])]
+            in_hole = all(0.4 <= c <= 0.6 for c in a + b)
+            check(int(r[3]) == (7 if in_hole else 3), "%s: segment %s: marker %s" % (name, r[0], r[3]))
+    check(open(os.path.join(WORK, "gmsh41.off")).read() == open(os.path.join(WORK, "gmsh22.off")).read() ==
+          open(os.path.join(WORK, "gmsh_upper.off")).read(), "gmsh: the same mesh from MSH 4.1 and 2.2")
+    r = run(AFMESH, msh_binary, "--size", "0.1", "--no-output", code=1)
+    check(r.stderr == "afmesh_2: error: " + msh_binary + ":2: binary .msh is not supported: save it as ASCII "
+          "(Gmsh's default: option Mesh.Binary = 0, or no -bin on the command line)\n", "binary .msh: " + r.stderr)
+else:
+    print("gmsh (python3-gmsh) not found - the Gmsh part is skipped")
 
 # --- malformed files: exit 1, one line naming the file (and the line where there is one) ------------------
 def refused(name, content, pattern):
@@ -134,5 +216,29 @@ refused("point.wkt", "POINT(1 2)\n", ":1: expected a WKT POLYGON or MULTIPOLYGON
 refused("broken.wkt", "\nPOLYGON((0 0,1 0,1 1,0 0)\n", ":2: not a valid WKT polygon")
 refused("flat.wkt", "POLYGON((0 0,1 0,0 0))\n", ":1: polygon 1: ring 1 has fewer than 3 distinct points")
 refused("crossing.wkt", "POLYGON((0 0,2 0,2 2,0 2,0 0))\nPOLYGON((1 1,3 1,3 3,1 3,1 1))\n", ":2: segment")
+refused("points.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n1\n"
+        "1 15 2 0 1 1\n$EndElements\n", ": no line elements (type 1 or 8")
+refused("undefined.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0 0\n2 1 0 0\n$EndNodes\n$Elements\n"
+        "1\n7 1 2 0 1 1 9\n$EndElements\n", ":11: element 7 refers to node 9, which $Nodes does not define")
+refused("crossing.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 1 0\n3 1 0 0\n4 0 1 0\n"
+        "$EndNodes\n$Elements\n2\n5 1 0 1 2\n6 1 0 3 4\n$EndElements\n", ":14: segment 6 crosses segment 5 (line 13)")
+
+# --- GIS vector sources through GDAL (Shapefile, GeoPackage, ...), or a clear refusal without it ----------
+if HAS_GDAL:
+    line = os.path.join(WORK, "line.geojson")
+    open(line, "w").write('{"type": "LineString", "coordinates": [[0, 0], [1, 1]]}')
+    for f in ("line.gpkg",):
+        if os.path.exists(os.path.join(WORK, f)):
+            os.remove(os.path.join(WORK, f))
+    run(OGR2OGR, "-f", "GPKG", os.path.join(WORK, "line.gpkg"), line)
+    r = run(AFMESH, os.path.join(WORK, "line.gpkg"), "--size", "0.1", "--no-output", code=1)
+    check(r.stderr == "afmesh_2: error: %s: layer 'line', feature 1: a LINESTRING is not a polygon or a "
+          "multipolygon\n" % os.path.join(WORK, "line.gpkg"), "line.gpkg: unexpected message: " + r.stderr)
+    refused("garbage.shp", "not a shapefile\n", ": cannot open as vector data")
+    r = run(AFMESH, os.path.join(WORK, "missing.gpkg"), "--size", "0.1", "--no-output", code=1)
+    check(r.stderr.startswith("afmesh_2: error: %s: cannot open (no such file)" % os.path.join(WORK, "missing.gpkg")),
+          "missing.gpkg: unexpected message: " + r.stderr)
+else:
+    refused("any.shp", "", ": this afmesh_2 was built without GDAL")
 
 finish("polygon inputs")

@@ -13,9 +13,11 @@
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_WKT_polygons.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_gmsh_boundary.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
+#include <CGAL/Advancing_front_mesher_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
@@ -1063,4 +1065,412 @@ AFM_TEST_CASE(test_io_insert_poly_repairs)
   std::size_t in_domain = 0;
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) in_domain += f->is_in_domain();
   AFM_CHECK(in_domain == cdt.number_of_faces());
+}
+
+// ---------------------------------------------------------------------------
+// Gmsh .msh boundaries: the layouts Gmsh 4.x writes for a 1D mesh (checked
+// against files written by its Python API, gmsh.model.mesh.generate(1), in
+// MSH 4.1 and 2.2), typed here anew; every damage named by file and line.
+
+namespace {
+
+afm_io::Poly_data parse_msh(const std::string& content, const std::string& name = "b.msh")
+{
+  std::istringstream in(content);
+  return afm_io::read_gmsh_boundary(in, name);
+}
+
+// A square [0,1]^2 around the hole [0.4,0.6]^2 as Gmsh 4.1 writes its 1D
+// mesh: a point entity per corner, a curve per side (outer sides in the
+// physical group 3 "outer", hole sides in 7 "hole"), the surface; nodes and
+// elements in one block per entity, the corners as point elements, the
+// outer sides split at their middle nodes 9 to 12.
+const std::string msh41_square_with_hole =
+  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+  "$PhysicalNames\n2\n1 3 \"outer\"\n1 7 \"hole\"\n$EndPhysicalNames\n"
+  "$Entities\n8 8 1 0\n"
+  "1 0 0 0 0 \n2 1 0 0 0 \n3 1 1 0 0 \n4 0 1 0 0 \n"
+  "5 0.4 0.4 0 0 \n6 0.6 0.4 0 0 \n7 0.6 0.6 0 0 \n8 0.4 0.6 0 0 \n"
+  "1 0 0 0 1 0 0 1 3 2 1 -2 \n2 1 0 0 1 1 0 1 3 2 2 -3 \n"
+  "3 0 1 0 1 1 0 1 3 2 3 -4 \n4 0 0 0 0 1 0 1 3 2 4 -1 \n"
+  "5 0.4 0.4 0 0.6 0.4 0 1 7 2 5 -6 \n6 0.6 0.4 0 0.6 0.6 0 1 7 2 6 -7 \n"
+  "7 0.4 0.6 0 0.6 0.6 0 1 7 2 7 -8 \n8 0.4 0.4 0 0.4 0.6 0 1 7 2 8 -5 \n"
+  "1 0 0 0 1 1 0 0 8 1 2 3 4 -8 -7 -6 -5 \n"
+  "$EndEntities\n"
+  "$Nodes\n13 12 1 12\n"
+  "0 1 0 1\n1\n0 0 0\n0 2 0 1\n2\n1 0 0\n0 3 0 1\n3\n1 1 0\n0 4 0 1\n4\n0 1 0\n"
+  "0 5 0 1\n5\n0.4 0.4 0\n0 6 0 1\n6\n0.6 0.4 0\n0 7 0 1\n7\n0.6 0.6 0\n0 8 0 1\n8\n0.4 0.6 0\n"
+  "1 1 0 1\n9\n0.5 0 0\n1 2 0 1\n10\n1 0.5 0\n1 3 0 1\n11\n0.5 1 0\n1 4 0 1\n12\n0 0.5 0\n"
+  "2 1 0 0\n"
+  "$EndNodes\n"
+  "$Elements\n16 20 1 20\n"
+  "0 1 15 1\n1 1 \n0 2 15 1\n2 2 \n0 3 15 1\n3 3 \n0 4 15 1\n4 4 \n"
+  "0 5 15 1\n5 5 \n0 6 15 1\n6 6 \n0 7 15 1\n7 7 \n0 8 15 1\n8 8 \n"
+  "1 1 1 2\n9 1 9 \n10 9 2 \n1 2 1 2\n11 2 10 \n12 10 3 \n"
+  "1 3 1 2\n13 3 11 \n14 11 4 \n1 4 1 2\n15 4 12 \n16 12 1 \n"
+  "1 5 1 1\n17 5 6 \n1 6 1 1\n18 6 7 \n1 7 1 1\n19 7 8 \n1 8 1 1\n20 8 5 \n"
+  "$EndElements\n";
+
+// The same in MSH 2.2: nodes `tag x y z`, elements `tag type 2 physical
+// elementary nodes`, only the lines of the physical groups.
+const std::string msh22_square_with_hole =
+  "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+  "$PhysicalNames\n2\n1 3 \"outer\"\n1 7 \"hole\"\n$EndPhysicalNames\n"
+  "$Nodes\n12\n"
+  "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0.4 0.4 0\n6 0.6 0.4 0\n7 0.6 0.6 0\n8 0.4 0.6 0\n"
+  "9 0.5 0 0\n10 1 0.5 0\n11 0.5 1 0\n12 0 0.5 0\n"
+  "$EndNodes\n"
+  "$Elements\n12\n"
+  "1 1 2 3 1 1 9\n2 1 2 3 1 9 2\n3 1 2 3 2 2 10\n4 1 2 3 2 10 3\n"
+  "5 1 2 3 3 3 11\n6 1 2 3 3 11 4\n7 1 2 3 4 4 12\n8 1 2 3 4 12 1\n"
+  "9 1 2 7 5 5 6\n10 1 2 7 6 6 7\n11 1 2 7 7 7 8\n12 1 2 7 8 8 5\n"
+  "$EndElements\n";
+
+// The segments as sorted pairs of end points, with their markers.
+typedef std::pair<std::array<double, 2>, std::array<double, 2> > Msh_test_segment;
+
+std::map<Msh_test_segment, int> segments_with_markers(const afm_io::Poly_data& d)
+{
+  std::map<Msh_test_segment, int> s;
+  for(std::size_t i = 0; i < d.segments.size(); ++i) {
+    std::array<double, 2> a = d.points[d.segments[i][0]], b = d.points[d.segments[i][1]];
+    if(b < a) std::swap(a, b);
+    s[Msh_test_segment(a, b)] = d.segment_markers.empty() ? 0 : d.segment_markers[i];
+  }
+  return s;
+}
+
+double domain_area(const afm_io::Poly_data& d)
+{
+  CDT cdt;
+  afm_io::insert_poly(cdt, d);
+  double area = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain()) area += CGAL::to_double(cdt.triangle(f).area());
+  return area;
+}
+
+void check_square_with_hole(const afm_io::Poly_data& d, const std::string& what)
+{
+  AFM_CHECK_MSG(d.points.size() == 12 && d.segments.size() == 12, what << ": " << d.points.size() << " points, "
+                                                                      << d.segments.size() << " segments");
+  AFM_CHECK_MSG(d.segment_markers.size() == 12 && d.point_markers.empty(), what);
+  const std::map<Msh_test_segment, int> s = segments_with_markers(d);
+  AFM_CHECK_MSG(s.size() == 12, what);
+  for(const auto& seg : s) {
+    const bool outer = seg.first.first[0] == 0 || seg.first.first[0] == 1 || seg.first.first[1] == 0 ||
+                       seg.first.first[1] == 1 || seg.first.second[0] == 1 || seg.first.second[1] == 1;
+    AFM_CHECK_MSG(seg.second == (outer ? 3 : 7), what << ": marker " << seg.second);
+  }
+  // the hole is found by nesting: one seed, inside it
+  AFM_CHECK_MSG(d.holes.size() == 1, what << ": " << d.holes.size() << " holes");
+  const double hx = d.holes[0][0], hy = d.holes[0][1];
+  AFM_CHECK_MSG(hx > 0.4 && hx < 0.6 && hy > 0.4 && hy < 0.6, what << ": hole at " << hx << " " << hy);
+  AFM_CHECK_MSG(std::abs(domain_area(d) - 0.96) < 1e-12, what << ": area " << domain_area(d));
+  // where each item was read, by its tag
+  AFM_CHECK(d.origin.file == "b.msh" && d.origin.point_file == "b.msh");
+  AFM_CHECK(d.origin.point_lines.size() == 12 && d.origin.point_ids.size() == 12);
+  AFM_CHECK(d.origin.segment_lines.size() == 12 && d.origin.segment_ids.size() == 12);
+}
+
+std::size_t line_of(const std::string& text, const std::string& line)
+{
+  std::istringstream in(text);
+  std::string l;
+  for(std::size_t n = 1; std::getline(in, l); ++n)
+    if(l == line) return n;
+  return 0;
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_io_read_gmsh_boundary_41)
+{
+  const afm_io::Poly_data d = parse_msh(msh41_square_with_hole);
+  check_square_with_hole(d, "MSH 4.1");
+  // points in the order of $Nodes; the corner tags 1..8, then the middles
+  AFM_CHECK(d.points[0][0] == 0 && d.points[0][1] == 0 && d.points[8][0] == 0.5 && d.points[8][1] == 0);
+  AFM_CHECK(d.origin.point_ids[11] == 12 && d.origin.point_lines[0] == line_of(msh41_square_with_hole, "0 0 0"));
+  AFM_CHECK(d.origin.segment_ids[0] == 9 && d.origin.segment_lines[0] == line_of(msh41_square_with_hole, "9 1 9 "));
+  AFM_CHECK(d.origin.segment_ids[11] == 20 && d.origin.segment_lines[11] == line_of(msh41_square_with_hole, "20 8 5 "));
+  AFM_CHECK(d.origin.ignored_elements == 0);
+
+  // Windows line ends read the same, with the same lines
+  std::string crlf;
+  for(char c : msh41_square_with_hole) {
+    if(c == '\n') crlf += '\r';
+    crlf += c;
+  }
+  const afm_io::Poly_data w = parse_msh(crlf);
+  AFM_CHECK(w.points == d.points && w.segments == d.segments && w.origin.segment_lines == d.origin.segment_lines);
+
+  // from a file, and a missing file
+  const std::string path = temp_path("square.msh");
+  write_text(path, msh41_square_with_hole);
+  AFM_CHECK(afm_io::read_gmsh_boundary(path).segments == d.segments);
+  std::remove(path.c_str());
+  std::string message;
+  try {
+    afm_io::read_gmsh_boundary(path);
+  } catch(const afm_io::Poly_read_error& e) {
+    message = e.what();
+  }
+  AFM_CHECK_MSG(message == path + ": cannot open file", message);
+}
+
+AFM_TEST_CASE(test_io_read_gmsh_boundary_22)
+{
+  const afm_io::Poly_data d = parse_msh(msh22_square_with_hole);
+  check_square_with_hole(d, "MSH 2.2");
+  AFM_CHECK(segments_with_markers(d) == segments_with_markers(parse_msh(msh41_square_with_hole)));
+  AFM_CHECK(d.origin.segment_ids[8] == 9 && d.origin.segment_lines[8] == line_of(msh22_square_with_hole, "9 1 2 7 5 5 6"));
+  AFM_CHECK(d.origin.point_lines[11] == line_of(msh22_square_with_hole, "12 0 0.5 0"));
+
+  // without physical groups (Gmsh then writes the physical tag 0, and the
+  // corners as point elements): no markers at all
+  std::string plain = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+                      "$Elements\n8\n1 15 2 0 1 1\n2 15 2 0 2 2\n3 15 2 0 3 3\n4 15 2 0 4 4\n"
+                      "5 1 2 0 1 1 2\n6 1 2 0 2 2 3\n7 1 2 0 3 3 4\n8 1 2 0 4 4 1\n$EndElements\n";
+  const afm_io::Poly_data p = parse_msh(plain);
+  AFM_CHECK(p.points.size() == 4 && p.segments.size() == 4 && p.segment_markers.empty() && p.holes.empty());
+  // an element in two physical groups is written twice: insert_poly() drops the repeat
+  const std::string twice = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n"
+                            "$Elements\n4\n1 1 2 5 1 1 2\n2 1 2 6 1 1 2\n3 1 2 5 2 2 3\n4 1 2 5 3 3 1\n$EndElements\n";
+  const afm_io::Poly_data t = parse_msh(twice);
+  AFM_CHECK(t.segments.size() == 4 && t.segment_markers == std::vector<int>({5, 6, 5, 5}));
+  CDT cdt;
+  AFM_CHECK(afm_io::insert_poly(cdt, t).duplicate_segments == 1);
+}
+
+// Sparse and unordered node tags, parametric nodes, a 3-node line, a
+// triangle (skipped, counted), sections this reader does not use, and the
+// physical group names of write_gmsh_msh(): marker_M gives the marker M.
+AFM_TEST_CASE(test_io_read_gmsh_boundary_variants)
+{
+  const std::string msh =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$Comments\nwritten by hand; $Nodes here is not a section\n$EndComments\n"
+    "$PhysicalNames\n3\n1 2 \"marker_0\"\n1 1 \"inlet #1\"\n2 5 \"domain\"\n$EndPhysicalNames\n"
+    "$Entities\n0 2 1 0\n"
+    "1 0 0 0 2 0 0 1 1 0\n"
+    "2 0 0 0 2 1 0 1 2 0\n"
+    "1 0 0 0 2 1 0 1 5 2 1 2\n"
+    "$EndEntities\n"
+    "$Nodes\n3 8 3 700\n"
+    "1 1 1 2\n700\n30\n0 0 0 0\n2 0 0 1\n" // a parametric curve block: x y z u
+    "1 2 0 5\n45\n3\n99\n98\n97\n2 1 0\n0 1 0\n2 0.5 0\n1 1.2 0\n0 0.5 0\n"
+    "2 1 1 1\n500\n1 0.5 0 0.25 0.5\n" // a parametric surface node: x y z u v
+    "$EndNodes\n"
+    "$Elements\n3 5 1 41\n"
+    "1 1 1 1\n1 700 30\n"
+    "1 2 8 3\n17 30 45 99\n40 45 3 98\n41 3 700 97\n" // 3-node lines: their ends, the middle dropped
+    "2 1 2 1\n2 700 30 500\n"
+    "$EndElements\n"
+    "$NodeData\n1\n\"a view\"\n1\n0.0\n3\n0\n1\n1\n700 1.5\n$EndNodeData\n"
+    "$Periodic\n0\n$EndPeriodic\n";
+  const afm_io::Poly_data d = parse_msh(msh, "v.msh");
+  // nodes 700, 30, 45 and 3, the ends of the lines (not the middles 97 to
+  // 99, nor 500 of the triangle), in the order of $Nodes
+  AFM_CHECK_MSG(d.points.size() == 4, d.points.size());
+  AFM_CHECK(d.origin.point_ids == std::vector<long long>({700, 30, 45, 3}));
+  AFM_CHECK(d.points[1][0] == 2 && d.points[1][1] == 0 && d.points[3][0] == 0 && d.points[3][1] == 1);
+  typedef std::array<std::size_t, 2> S;
+  AFM_CHECK(d.segments == std::vector<S>({S{{0, 1}}, S{{1, 2}}, S{{2, 3}}, S{{3, 0}}}));
+  AFM_CHECK(d.origin.segment_ids == std::vector<long long>({1, 17, 40, 41}));
+  // curve 1 in group 1 "inlet #1", curve 2 in group 2 "marker_0"
+  AFM_CHECK(d.segment_markers == std::vector<int>({1, 0, 0, 0}));
+  AFM_CHECK(d.origin.ignored_elements == 1 && d.holes.empty());
+  AFM_CHECK(d.origin.point_lines[0] == line_of(msh, "0 0 0 0") && d.origin.segment_lines[3] == line_of(msh, "41 3 700 97"));
+  // the middle node of a 3-node line must exist too
+  bool thrown = false;
+  try {
+    parse_msh(msh.substr(0, msh.find("40 45 3 98")) + "40 45 3 96" + msh.substr(msh.find("40 45 3 98") + 10), "v.msh");
+  } catch(const afm_io::Poly_read_error& e) {
+    thrown = e.line() == line_of(msh, "40 45 3 98") && e.problem() == "element 40 refers to node 96, which $Nodes does not define";
+  }
+  AFM_CHECK(thrown);
+
+  // a point element adds its node as an isolated point
+  const std::string with_point = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n2 4 1 4\n"
+                                 "1 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n0 1 0 1\n4\n0.2 0.2 0\n$EndNodes\n"
+                                 "$Elements\n2 4 1 4\n1 1 1 3\n1 1 2\n2 2 3\n3 3 1\n0 1 15 1\n4 4\n$EndElements\n";
+  const afm_io::Poly_data p = parse_msh(with_point);
+  AFM_CHECK(p.points.size() == 4 && p.segments.size() == 3 && p.points[3][0] == 0.2);
+  CDT cdt;
+  afm_io::insert_poly(cdt, p);
+  AFM_CHECK(cdt.number_of_vertices() == 4);
+
+  // a plane other than z = 0 is fine, as long as it is one plane
+  const afm_io::Poly_data z = parse_msh("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 5\n2 1 0 5\n3 0 1 5\n"
+                                        "$EndNodes\n$Elements\n3\n1 1 0 1 2\n2 1 0 2 3\n3 1 0 3 1\n$EndElements\n");
+  AFM_CHECK(z.points.size() == 3 && z.segments.size() == 3);
+
+  // insert_poly() names the items by their tags and lines
+  const std::string crossing = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n10 0 0 0\n20 1 1 0\n30 1 0 0\n40 0 1 0\n"
+                               "$EndNodes\n$Elements\n2\n11 1 0 10 20\n17 1 0 30 40\n$EndElements\n";
+  const afm_io::Poly_data x = parse_msh(crossing, "x.msh");
+  CDT xc;
+  std::string message;
+  try {
+    afm_io::insert_poly(xc, x);
+  } catch(const afm_io::Poly_read_error& e) {
+    message = e.what();
+  }
+  AFM_CHECK_MSG(message == "x.msh:14: segment 17 crosses segment 11 (line 13)", message);
+}
+
+AFM_TEST_CASE(test_io_read_gmsh_boundary_rejects_malformed_input)
+{
+  // a triangle in MSH 4.1, without $Entities (lines 1-20), damaged below
+  const std::string head = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  const std::string nodes = "$Nodes\n1 3 1 3\n1 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n";
+  const std::string elements = "$Elements\n1 3 1 3\n1 1 1 3\n1 1 2\n2 2 3\n3 3 1\n$EndElements\n";
+  AFM_CHECK(parse_msh(head + nodes + elements).segments.size() == 3);
+  auto replace = [](std::string s, const std::string& from, const std::string& to) {
+    const std::size_t i = s.find(from);
+    AFM_CHECK_MSG(i != std::string::npos, from);
+    return s.replace(i, from.size(), to);
+  };
+  const std::string v2 = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n";
+  const std::string entities = "$Entities\n0 1 0 0\n1 0 0 0 1 1 0 1 4 0\n$EndEntities\n";
+  const std::vector<Bad_case> cases = {
+    {"empty", "", 0, "file holds no data, expected $MeshFormat"},
+    {"blank", "\n\n", 2, "file holds no data"},
+    {"not a .msh", "solid ascii\n", 1, "expected $MeshFormat, found 'solid': not a Gmsh .msh file"},
+    {"version 4", "$MeshFormat\n4 0 8\n$EndMeshFormat\n", 2, "MSH version '4' is not supported (versions 4.1 and 2.2 are)"},
+    {"version 3", "$MeshFormat\n3.0 0 8\n", 2, "MSH version '3.0' is not supported"},
+    {"binary", std::string("$MeshFormat\n4.1 1 8\n\x01") + std::string(3, '\0') + "\n$EndMeshFormat\n", 2,
+     "binary .msh is not supported: save it as ASCII (Gmsh's default: option Mesh.Binary = 0"},
+    {"file type 2", "$MeshFormat\n4.1 2 8\n", 2, "file type 2 must be 0 (ASCII) or 1 (binary)"},
+    {"short format line", "$MeshFormat\n4.1 0\n", 2, "has 2 values, expected 3"},
+    {"no $EndMeshFormat", "$MeshFormat\n4.1 0 8\n$Nodes\n", 3, "expected $EndMeshFormat after the format line, found '$Nodes'"},
+    {"no $Nodes", head + elements, 0, "no $Nodes section"},
+    {"no $Elements", head + nodes, 0, "no $Elements section"},
+    {"text between sections", head + "garbage\n" + nodes + elements, 4, "expected a section ($Nodes, $Elements, ...), found 'garbage'"},
+    {"stray end", head + "$EndNodes\n", 4, "'$EndNodes' closes no open section"},
+    {"second $Nodes", head + nodes + nodes + elements, 14, "a second $Nodes section (the first on line 4)"},
+    {"second $MeshFormat", head + head, 4, "a second $MeshFormat section (the first on line 1)"},
+    {"unclosed section", head + nodes + elements + "$NodeData\n1\n", 22, "section $NodeData of line 21 is not closed"},
+    {"partitioned", head + "$PartitionedEntities\n", 4, "partitioned meshes are not supported"},
+    {"truncated nodes", head + "$Nodes\n1 3 1 3\n1 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n", 11,
+     "file ends in section $Nodes, expected the coordinates of node 3 (3 of 3 of the block on line 6)"},
+    {"nodes cut by $EndNodes", head + "$Nodes\n1 3 1 3\n1 1 0 3\n1\n2\n$EndNodes\n", 9,
+     "expected node tag 3 of 3 of the block on line 6, found '$EndNodes'"},
+    {"bad coordinate", replace(head + nodes + elements, "1 0 0\n", "1 0.x 0\n"), 11, "y coordinate '0.x' is not a number"},
+    {"nan coordinate", replace(head + nodes + elements, "1 0 0\n", "nan 0 0\n"), 11, "x coordinate 'nan' is not finite"},
+    {"fractional tag", replace(head + nodes + elements, "\n2\n", "\n2.5\n"), 8, "node tag '2.5' is not an integer"},
+    {"zero tag", replace(head + nodes + elements, "\n2\n", "\n0\n"), 8, "node tag 0 is not positive"},
+    {"node count", replace(head + nodes + elements, "1 3 1 3\n1 1 0 3", "1 4 1 4\n1 1 0 3"), 5,
+     "the node header announces 4 nodes, its blocks hold 3"},
+    {"node defined twice", replace(head + nodes + elements, "\n3\n0 0 0", "\n1\n0 0 0"), 12,
+     "node 1 is defined twice (first on line 10)"},
+    {"parametric node without u", replace(head + nodes + elements, "1 1 0 3", "1 1 1 3"), 10,
+     "a parametric node's coordinates on an entity of dimension 1 has 3 values, expected 4"},
+    {"z not constant", replace(head + nodes + elements, "1 0 0\n", "1 0 0.5\n"), 11,
+     "node 2 lies at z = 0.5, node 1 (line 10) at z = 0: the boundary must lie in a plane z = constant"},
+    {"undefined node", replace(head + nodes + elements, "3 3 1\n", "3 3 4\n"), 19,
+     "element 3 refers to node 4, which $Nodes does not define"},
+    {"line to itself", replace(head + nodes + elements, "2 2 3\n", "2 2 2\n"), 18, "element 2 joins node 2 to itself"},
+    {"line with one node", replace(head + nodes + elements, "2 2 3\n", "2 2\n"), 18,
+     "an element of type 1 'tag' and 2 nodes has 2 values, expected 3"},
+    {"element count", replace(head + nodes + elements, "1 3 1 3\n1 1 1", "1 5 1 5\n1 1 1"), 15,
+     "the element header announces 5 elements, its blocks hold 3"},
+    {"truncated elements", head + nodes + "$Elements\n1 3 1 3\n1 1 1 3\n1 1 2\n2 2 3\n", 18,
+     "file ends in section $Elements, expected element 3 of 3 of the block on line 16"},
+    {"no $EndElements", head + nodes + "$Elements\n1 3 1 3\n1 1 1 3\n1 1 2\n2 2 3\n3 3 1\n$Foo\n", 20,
+     "expected $EndElements after the 1 element block announced, found '$Foo'"},
+    {"lines on a surface", replace(head + nodes + elements, "1 1 1 3\n1 1 2", "2 1 1 3\n1 1 2"), 16,
+     "a block of line elements (type 1) must be on a curve entity (dimension 1), not on one of dimension 2"},
+    {"only points", head + nodes + "$Elements\n1 1 1 1\n0 1 15 1\n1 1\n$EndElements\n", 0,
+     "no line elements (type 1 or 8"},
+    {"only triangles", head + nodes + "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n", 0,
+     "give the boundary as a 1D mesh (gmsh -1, or gmsh.model.mesh.generate(1)); its 1 element of another type is not read"},
+    {"curve not in $Entities", head + entities + nodes + replace(elements, "1 1 1 3", "1 9 1 3"), 20,
+     "the element block is on curve 9, which $Entities does not list"},
+    {"entity line short", head + "$Entities\n0 1 0 0\n1 0 0 0 1 1 0 1 4\n$EndEntities\n", 6,
+     "a curve entity needs its number of bounding entities after its physical tags"},
+    {"entity line long", head + "$Entities\n0 1 0 0\n1 0 0 0 1 1 0 1 4 0 7\n$EndEntities\n", 6,
+     "a curve entity has 11 values, expected 10"},
+    {"entities cut short", head + "$Entities\n1 1 0 0\n1 0 0 0 0\n$EndEntities\n", 7,
+     "expected curve entity 1 of 1, found '$EndEntities'"},
+    {"curve listed twice", head + "$Entities\n0 2 0 0\n1 0 0 0 1 1 0 0 0\n1 0 0 0 1 1 0 0 0\n$EndEntities\n", 7,
+     "curve entity 1 is listed twice (first on line 6)"},
+    {"unquoted name", head + "$PhysicalNames\n1\n1 3 outer\n$EndPhysicalNames\n", 6,
+     "the name of physical group 3 must be in double quotes"},
+    {"physical tag too large", head + "$PhysicalNames\n1\n1 3000000000 \"a\"\n$EndPhysicalNames\n", 6,
+     "physical tag 3000000000 is out of range"},
+    {"2.2: short node line", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1\n$EndNodes\n", 8, "a node line 'tag x y z' has 3 values, expected 4"},
+    {"2.2: undefined node", v2 + "$Elements\n3\n1 1 0 1 2\n2 1 0 2 3\n3 1 2 0 1 3 7\n$EndElements\n", 14,
+     "element 3 refers to node 7, which $Nodes does not define"},
+    {"2.2: too many tags", v2 + "$Elements\n1\n1 1 5 1 2\n$EndElements\n", 12, "an element with 5 tags has 5 values"},
+    {"2.2: line with 3 nodes", v2 + "$Elements\n1\n1 1 2 0 1 1 2 3\n$EndElements\n", 12,
+     "an element of type 1 with 2 tags 'tag type numTags tags...' and 2 nodes has 8 values, expected 7"},
+    {"2.2: element count", v2 + "$Elements\n3\n1 1 0 1 2\n2 1 0 2 3\n$EndElements\n", 14,
+     "expected element 3 of 3, found '$EndElements'"},
+    {"2.2: node count", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n", 8,
+     "expected $EndNodes after the 2 nodes announced, found '3'"},
+  };
+  for(const Bad_case& c : cases) {
+    bool thrown = false;
+    try {
+      parse_msh(c.content, "file.msh");
+    } catch(const afm_io::Poly_read_error& e) {
+      thrown = true;
+      const std::string what = e.what();
+      const std::string where = c.line == 0 ? std::string("file.msh: ") : "file.msh:" + std::to_string(c.line) + ": ";
+      AFM_CHECK_MSG(what.compare(0, where.size(), where) == 0,
+                    c.name << ": got \"" << what << "\", expected it to start with " << where);
+      AFM_CHECK_MSG(e.line() == c.line && e.file() == "file.msh", c.name << ": " << what);
+      AFM_CHECK_MSG(what.find(c.problem) != std::string::npos,
+                    c.name << ": got \"" << what << "\", expected \"" << c.problem << "\"");
+      AFM_CHECK_MSG(what.find('\n') == std::string::npos, c.name << ": " << what);
+    }
+    AFM_CHECK_MSG(thrown, c.name << ": accepted");
+  }
+}
+
+// A mesh made here, written with its markers by write_gmsh_msh(), read back:
+// the same boundary segments with the same markers, also those that are no
+// Gmsh tag (0, negative), through the names marker_M.
+AFM_TEST_CASE(test_io_gmsh_boundary_round_trip)
+{
+  typedef AFM::Markers_and_regions_2<CDT> Tags;
+  afm_io::Poly_data in = afm_geometry::tagged_regions(0.1);
+  for(int& m : in.segment_markers) {
+    if(m == 5) m = 0;  // the interior side between the regions: written as 0
+    if(m == 6) m = -3; // the inclusion
+  }
+  CDT cdt;
+  const auto inserted = afm_io::insert_poly(cdt, in);
+  Tags tags = afm_io::markers_and_regions(in, inserted);
+  const auto rc = CGAL::advancing_front_mesh_2(cdt, inserted.hole_seeds.begin(), inserted.hole_seeds.end(), 0.1);
+  AFM_CHECK(rc == AFM::MESH_COMPLETE);
+  AFM_CHECK(in_domain_faces(cdt) > 100);
+  tags.mark_regions(cdt);
+
+  // what the mesh holds: its constrained edges with their markers
+  std::map<Msh_test_segment, int> expected;
+  for(const auto& e : cdt.constrained_edges()) {
+    std::array<double, 2> a = {{e.first->vertex(CDT::ccw(e.second))->point().x(),
+                                e.first->vertex(CDT::ccw(e.second))->point().y()}};
+    std::array<double, 2> b = {{e.first->vertex(CDT::cw(e.second))->point().x(),
+                                e.first->vertex(CDT::cw(e.second))->point().y()}};
+    if(b < a) std::swap(a, b);
+    expected[Msh_test_segment(a, b)] = tags.edge_marker(cdt, e.first, e.second);
+  }
+  // the mesher splits no constrained edge: the input's segments and markers
+  AFM_CHECK(expected == segments_with_markers(in));
+
+  std::ostringstream os;
+  afm_io::write_gmsh_msh(os, cdt, tags);
+  AFM_CHECK(os.str().find("\"marker_-3\"") != std::string::npos && os.str().find("\"marker_0\"") != std::string::npos);
+  const afm_io::Poly_data back = parse_msh(os.str(), "round.msh");
+  AFM_CHECK(back.segments.size() == in.segments.size());
+  AFM_CHECK(segments_with_markers(back) == expected);
+  AFM_CHECK_MSG(back.origin.ignored_elements == in_domain_faces(cdt), back.origin.ignored_elements);
+  // a boundary vertex only: the nodes inside the domain are dropped
+  AFM_CHECK(back.points.size() == in.points.size());
+  // A 1D mesh cannot tell an inclusion (meshed) from a hole: by nesting,
+  // both the hole and the inclusion get a seed.
+  AFM_CHECK_MSG(back.holes.size() == 2, back.holes.size());
 }

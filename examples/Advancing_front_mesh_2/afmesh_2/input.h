@@ -4,11 +4,13 @@
 #define AFMESH_2_INPUT_H
 
 #include "geojson.h"
+#include "ogr_input.h"
 #include "options.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/insert_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/markers_and_regions.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_WKT_polygons.h>
+#include <CGAL/Advancing_front_mesh_2/IO/read_gmsh_boundary.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/read_size_sources.h>
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
@@ -21,6 +23,7 @@
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_2.h>
 
+#include <cctype>
 #include <chrono>
 #include <iostream>
 #include <iterator>
@@ -95,10 +98,34 @@ struct Input
   Input_times times;
 };
 
-// A .poly file; polygons from WKT (.wkt) or GeoJSON (.geojson, .json).
+// Whether `file` is a Gmsh mesh: its name ends in .msh, in any case.
+inline bool is_gmsh_input(const std::string& file)
+{
+  if(file.size() < 4) return false;
+  std::string tail = file.substr(file.size() - 4);
+  for(char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ".msh";
+}
+
+// A Gmsh 1D mesh: its line elements are the boundary; a note when the file
+// has elements of other types, which are not read.
+inline AFM::IO::Poly_data read_gmsh_input(const std::string& file)
+{
+  AFM::IO::Poly_data d = AFM::IO::read_gmsh_boundary(file);
+  if(d.origin.ignored_elements > 0)
+    std::cerr << "afmesh_2: note: " << file << ": the boundary is read from the line elements; "
+              << d.origin.ignored_elements << " elements of other types (surfaces, volumes) are not read\n";
+  return d;
+}
+
+// A .poly file; polygons from WKT (.wkt) or GeoJSON (.geojson, .json), or
+// through GDAL from other GIS vector formats (Shapefile, GeoPackage, ...);
+// the boundary in a Gmsh 1D mesh (.msh).
 inline AFM::IO::Poly_data read_input(const std::string& file)
 {
   try {
+    if(is_gmsh_input(file)) return read_gmsh_input(file);
+    if(is_ogr_input(file)) return read_ogr_input(file);
     if(ends_with(file, ".wkt") || ends_with(file, ".WKT")) return AFM::IO::read_WKT_polygons(file);
     if(ends_with(file, ".geojson") || ends_with(file, ".json") || ends_with(file, ".GEOJSON")) return read_geojson(file);
     return AFM::IO::read_poly(file);

@@ -6,6 +6,8 @@
 
 #include <boost/program_options.hpp>
 
+#include "ogr_input.h"
+
 #include <CGAL/Advancing_front_mesh_2/version.h>
 #include <CGAL/version.h>
 
@@ -97,8 +99,9 @@ inline po::options_description visible_options(Command_line& c)
 {
   Options& opt = c.opt;
   po::options_description visible("Usage: afmesh_2 INPUT [--size H] [--sources FILE] [-o OUT ...] [options]\n\n"
-                                  "Meshes the domain of INPUT (a Triangle .poly file, or polygons with holes in\n"
-                                  "WKT .wkt or GeoJSON .geojson) with the advancing-front\n"
+                                  "Meshes the domain of INPUT (a Triangle .poly file; polygons with holes in\n"
+                                  "WKT .wkt, GeoJSON .geojson or, built with GDAL, .shp .gpkg .gml .kml ...;\n"
+                                  "or a Gmsh 1D mesh .msh) with the advancing-front\n"
                                   "Delaunay algorithm of Mavriplis (1992). With --size alone the target edge\n"
                                   "length is uniform; otherwise it comes from a background field on a quadtree:\n"
                                   "the point sources diffused by a Poisson solve, the boundary spacing grown from\n"
@@ -328,7 +331,9 @@ inline void print_version()
 {
   std::cout << program << " " << CGAL_ADVANCING_FRONT_MESH_2_VERSION_STR << " (Advancing_front_mesh_2), built with CGAL "
             << CGAL_VERSION_STR << ", Boost " << BOOST_VERSION / 100000 << "." << BOOST_VERSION / 100 % 1000 << "."
-            << BOOST_VERSION % 100 << ", " << (sizeof(void*) * 8) << "-bit"
+            << BOOST_VERSION % 100 << ", "
+            << (gdal_version().empty() ? std::string("without GDAL") : "GDAL " + gdal_version()) << ", "
+            << (sizeof(void*) * 8) << "-bit"
 #ifdef NDEBUG
             << ", assertions off"
 #else

@@ -62,7 +62,8 @@ struct Poly_data
   /*!
   Where the items were read, so that a problem found after reading (by
   `insert_poly()`) names the file, line and id as the file gives them.
-  Filled by `read_poly()`; left empty for data built in code, whose
+  Filled by the readers (`read_poly()`, `read_WKT_polygons()`,
+  `read_gmsh_boundary()`); left empty for data built in code, whose
   problems are then named by 0-based index without a line.
   */
   struct Origin
@@ -72,6 +73,13 @@ struct Poly_data
     std::vector<std::size_t> point_lines, segment_lines, hole_lines, region_lines; ///< 1-based line of each item
     long long first_point_id = 0, first_segment_id = 0, first_hole_id = 0,
               first_region_id = 0; ///< 0 or 1, as in the file
+    /// empty, or the id of each point and segment in the file when the ids
+    /// are not consecutive (Gmsh's node and element tags); they then name
+    /// the items instead of `first_point_id` and `first_segment_id`
+    std::vector<long long> point_ids, segment_ids;
+    /// elements of a Gmsh file that were skipped (surfaces and volumes:
+    /// `read_gmsh_boundary()` reads lines and points only), 0 for other files
+    std::size_t ignored_elements = 0;
   };
   Origin origin;
 };

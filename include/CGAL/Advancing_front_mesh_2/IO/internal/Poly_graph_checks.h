@@ -56,13 +56,13 @@ public:
 
   std::string point(std::size_t i) const
   {
-    return "vertex " + std::to_string(d_.origin.first_point_id + static_cast<long long>(i)) +
+    return "vertex " + std::to_string(point_number(i)) +
            where(point_line(i), point_file() != file() ? point_file() : std::string());
   }
   // in a message about `message_file`, the line names its file if it is another
   std::string segment(std::size_t i, const std::string& message_file = std::string()) const
   {
-    return "segment " + std::to_string(d_.origin.first_segment_id + static_cast<long long>(i)) +
+    return "segment " + std::to_string(segment_number(i)) +
            where(segment_line(i), message_file.empty() || message_file == file() ? std::string() : file());
   }
   std::string hole(std::size_t i) const
@@ -73,7 +73,7 @@ public:
   // the bare id, for the subject of a message whose line is the message's
   std::string segment_id(std::size_t i) const
   {
-    return "segment " + std::to_string(d_.origin.first_segment_id + static_cast<long long>(i));
+    return "segment " + std::to_string(segment_number(i));
   }
   std::string hole_id(std::size_t i) const
   {
@@ -85,7 +85,20 @@ public:
   }
   std::string point_id(std::size_t i) const
   {
-    return "vertex " + std::to_string(d_.origin.first_point_id + static_cast<long long>(i));
+    return "vertex " + std::to_string(point_number(i));
+  }
+
+  // the id of an item in its file: its own when the file gives ids that are
+  // not consecutive (Gmsh's tags), else the file's first id plus the index
+  long long point_number(std::size_t i) const
+  {
+    return i < d_.origin.point_ids.size() ? d_.origin.point_ids[i]
+                                          : d_.origin.first_point_id + static_cast<long long>(i);
+  }
+  long long segment_number(std::size_t i) const
+  {
+    return i < d_.origin.segment_ids.size() ? d_.origin.segment_ids[i]
+                                            : d_.origin.first_segment_id + static_cast<long long>(i);
   }
 
 private:

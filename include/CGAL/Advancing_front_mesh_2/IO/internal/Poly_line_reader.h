@@ -140,6 +140,24 @@ inline bool poly_parse_real(const std::string& token, double& value)
   return true;
 }
 
+// '\r' is blank so that files written on Windows read the same.
+inline bool poly_is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// The tokens of `line` (separated by blanks), as [begin, end) positions.
+inline void poly_split_tokens(const std::string& line, std::vector<std::pair<std::size_t, std::size_t> >& tokens)
+{
+  tokens.clear();
+  std::size_t i = 0;
+  const std::size_t n = line.size();
+  while(i < n) {
+    while(i < n && poly_is_blank(line[i])) ++i;
+    if(i == n) break;
+    const std::size_t b = i;
+    while(i < n && !poly_is_blank(line[i])) ++i;
+    tokens.push_back(std::make_pair(b, i));
+  }
+}
+
 // Reads a Triangle file line by line, dropping comments and blank lines, and
 // knows the file name and current line so that every parse error can say
 // where it is.
@@ -277,28 +295,9 @@ private:
     return true;
   }
 
-  static bool is_blank(char c)
-  {
-    // '\r' is blank so that files written on Windows read the same.
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-  }
+  static bool is_blank(char c) { return poly_is_blank(c); }
 
-  void split()
-  {
-    tokens_.clear();
-    std::size_t i = 0;
-    const std::size_t n = line_.size();
-    while(i < n) {
-      while(i < n && is_blank(line_[i]))
-        ++i;
-      if(i == n)
-        break;
-      const std::size_t b = i;
-      while(i < n && !is_blank(line_[i]))
-        ++i;
-      tokens_.push_back(std::make_pair(b, i));
-    }
-  }
+  void split() { poly_split_tokens(line_, tokens_); }
 
   std::streambuf* buf_;
   std::string file_;
