@@ -115,6 +115,26 @@ def test_size_function_in_bulk(airfoil):
     assert edge[(d > 3) & (d < 5)].mean() > 5 * edge[(d > 0.6) & (d < 0.8)].mean()
 
 
+def test_size_grid(airfoil):
+    """A NumPy grid of sizes: the same mesh as the function it samples where that function is bilinear in each
+    cell (here linear), and bad grids refused."""
+    v, s, h, _, _, _ = read_poly(airfoil)
+    xs, ys = np.linspace(-20, 21, 42), np.linspace(-20, 20, 9)
+    grid = 0.02 + 0.01 * np.abs(xs)[None, :] + 0.0 * ys[:, None]
+    linear = lambda p: 0.02 + 0.01 * np.abs(np.clip(p[:, 0], -20, 21))
+    m = afmesh_2.mesh(v, s, h, size=(xs, ys, grid))
+    check_valid(airfoil, m, "airfoil_grid")
+    # |x| is linear on each cell, the grid's nodes at integers
+    f = afmesh_2.mesh(v, s, h, size=linear)
+    assert len(m.triangles) > 1000
+    assert abs(len(m.triangles) - len(f.triangles)) <= 0.01 * len(f.triangles)
+    p = np.array([[0.25, 0.3], [-7.5, 1.0], [30.0, 0.0]])
+    assert np.allclose(afmesh_2.grid_size(xs, ys, grid)(p), linear(p))
+    for bad in ((xs[::-1], ys, grid), (xs, ys, grid[:, :-1]), (xs, ys, -grid), (xs, [0.0], grid[:1]), (xs, ys)):
+        with pytest.raises(ValueError):
+            afmesh_2.mesh(v, s, h, size=bad)
+
+
 def test_markers_regions_and_meshio():
     path = os.path.join(WORK, "tagged.poly")
     run(MAKE_INPUT, "tagged-regions", path)

@@ -14,7 +14,7 @@ is installed.
 from ._afmesh_2 import InputError, PolyReadError, __version__
 from ._afmesh_2 import mesh as _mesh
 
-__all__ = ["mesh", "Mesh", "InputError", "PolyReadError", "__version__"]
+__all__ = ["mesh", "grid_size", "Mesh", "InputError", "PolyReadError", "__version__"]
 
 
 class Mesh:
@@ -56,6 +56,34 @@ class Mesh:
         return meshio.Mesh(points, cells, point_data={"marker": self.vertex_markers}, cell_data=cell_data)
 
 
+def grid_size(xs, ys, h):
+    """A size function from a grid of sizes: h[j, i] at (xs[i], ys[j]),
+    interpolated bilinearly (the nearest edge value outside the grid); for
+    size=(xs, ys, h). xs and ys strictly increasing, at least 2 each; h of
+    shape (len(ys), len(xs)), positive and finite. Raises ValueError."""
+    import numpy as np
+    xs, ys, h = (np.asarray(a, dtype=float) for a in (xs, ys, h))
+    for name, a in (("xs", xs), ("ys", ys)):
+        if a.ndim != 1 or len(a) < 2 or not np.all(np.isfinite(a)) or not np.all(np.diff(a) > 0):
+            raise ValueError("grid size: %s must be at least 2 finite, strictly increasing values" % name)
+    if h.shape != (len(ys), len(xs)):
+        raise ValueError("grid size: h has shape %s, expected (len(ys), len(xs)) = (%d, %d)" %
+                         (h.shape, len(ys), len(xs)))
+    if not np.all(np.isfinite(h)) or not np.all(h > 0):
+        raise ValueError("grid size: every value of h must be positive and finite")
+
+    def size(points):
+        x = np.clip(points[:, 0], xs[0], xs[-1])
+        y = np.clip(points[:, 1], ys[0], ys[-1])
+        i = np.clip(np.searchsorted(xs, x, side="right") - 1, 0, len(xs) - 2)
+        j = np.clip(np.searchsorted(ys, y, side="right") - 1, 0, len(ys) - 2)
+        tx = (x - xs[i]) / (xs[i + 1] - xs[i])
+        ty = (y - ys[j]) / (ys[j + 1] - ys[j])
+        return ((1 - ty) * ((1 - tx) * h[j, i] + tx * h[j, i + 1]) +
+                ty * ((1 - tx) * h[j + 1, i] + tx * h[j + 1, i + 1]))
+    return size
+
+
 def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=None, segment_markers=None,
          size=None, sources=None, max_size=None, grading=0.2, boundary_spacing="grow", smooth=0,
          smoother="quality", kernel="epick"):
@@ -71,6 +99,8 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
       size=f                 a function of an (n, 2) array of points returning n
                              sizes, evaluated in bulk a few times on a quadtree
                              of samples (not once per point);
+      size=(xs, ys, h)       a NumPy grid of sizes, h[j, i] at (xs[i], ys[j]),
+                             interpolated bilinearly (see grid_size());
       sources=(s, 3) array   point sources (x, y, h) diffused by a Poisson solve,
                              with the boundary spacing grown at `grading`
                              (None: not limited) and bounded by max_size;
@@ -83,5 +113,9 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
     meshed, with the message of the afmesh_2 tool). The GIL is released while
     meshing.
     """
+    if isinstance(size, tuple):
+        if len(size) != 3:
+            raise ValueError("size: a grid is given as (xs, ys, h)")
+        size = grid_size(*size)
     return Mesh(**_mesh(vertices, segments, holes, regions, vertex_markers, segment_markers, size, sources,
                         max_size, grading, boundary_spacing, smooth, smoother, kernel))
