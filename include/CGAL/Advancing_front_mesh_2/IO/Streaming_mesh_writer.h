@@ -14,10 +14,9 @@
 
 #include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/write_mesh.h>
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_assembly.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_files.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_writer_state.h>
-#include <CGAL/Advancing_front_mesh_2/IO/internal/Vtu_layout.h>
-#include <CGAL/Advancing_front_mesh_2/IO/write_gmsh_msh.h>
 
 #include <CGAL/number_utils.h>
 
@@ -227,8 +226,8 @@ public:
       for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
         internal::Streaming_file& f = o->vertices();
         if(o->format == internal::Streaming_format::VTU && content_.binary) {
-          put_raw(f, x); put_raw(f, y); put_raw(f, 0.);
-          if(o->vertex_markers != nullptr) put_raw(o->vertex_markers->file, std::int32_t(marker));
+          internal::streaming_put_raw(f, x); internal::streaming_put_raw(f, y); internal::streaming_put_raw(f, 0.);
+          if(o->vertex_markers != nullptr) internal::streaming_put_raw(o->vertex_markers->file, std::int32_t(marker));
           continue;
         }
         char* c = f.reserve(2 * internal::streaming_max_uint_chars + n + 8);
@@ -250,7 +249,7 @@ public:
           c += 3;
         }
         f.commit(c);
-        if(o->vertex_markers != nullptr) put_line(o->vertex_markers->file, mark, nm);
+        if(o->vertex_markers != nullptr) internal::streaming_put_line(o->vertex_markers->file, mark, nm);
       }
     });
 
@@ -326,11 +325,11 @@ public:
           break;
         case internal::Streaming_format::VTU:
           if(content_.binary) {
-            for(std::size_t v : {i, j, k}) put_raw(o->triangles(), std::int64_t(v));
-            if(o->triangle_attributes != nullptr) put_raw(o->triangle_attributes->file, attribute);
+            for(std::size_t v : {i, j, k}) internal::streaming_put_raw(o->triangles(), std::int64_t(v));
+            if(o->triangle_attributes != nullptr) internal::streaming_put_raw(o->triangle_attributes->file, attribute);
           } else {
             o->triangles().put(zero, nz);
-            if(o->triangle_attributes != nullptr) put_line(o->triangle_attributes->file, attr, na);
+            if(o->triangle_attributes != nullptr) internal::streaming_put_line(o->triangle_attributes->file, attr, na);
           }
           break;
         case internal::Streaming_format::NODE_ELE:
@@ -342,7 +341,7 @@ public:
           o->triangles().put("\n", 1);
           break;
         case internal::Streaming_format::MSH:
-          put_line(o->triangles(o->triangle_parts > 1 ? group : 0), one, nw);
+          internal::streaming_put_line(o->triangles(o->triangle_parts > 1 ? group : 0), one, nw);
           break;
         }
       }
@@ -563,22 +562,6 @@ private:
     internal::streaming_check_distinct(outputs_, content_);
   }
 
-  template <class T>
-  static void put_raw(internal::Streaming_file& f, T v)
-  {
-    char* c = f.reserve(sizeof(T));
-    std::memcpy(c, &v, sizeof(T));
-    f.commit(c + sizeof(T));
-  }
-
-  static void put_line(internal::Streaming_file& f, const char* s, std::size_t n)
-  {
-    char* c = f.reserve(n + 1);
-    std::memcpy(c, s, n);
-    c[n] = '\n';
-    f.commit(c + n + 1);
-  }
-
   // The counts of a state against each other and against the sizes of the
   // files, which cannot hold more than a line of the shortest kind per
   // vertex or triangle (binary parts: exactly a record each); the files
@@ -678,229 +661,32 @@ private:
     }
   }
 
-  // The final files of `o`, under their temporary names.
+  // The final files of `o`, under their temporary names (Streaming_assembly.h).
   void finish(internal::Streaming_output& o)
   {
     typedef internal::Streaming_format Format;
-    typedef internal::Streaming_output Output;
+    const internal::Streaming_totals t{nv_, nt_, xmin_, ymin_, xmax_, ymax_,
+                                       content_, segments_, segment_markers_, group_counts_};
     if(o.format == Format::NODE_ELE) {
-      finish_node_ele(o);
+      internal::streaming_finish_node_ele(o, t);
       return;
     }
-    internal::Streaming_file out(Output::temporary(o.name));
+    internal::Streaming_file out(internal::Streaming_output::temporary(o.name));
     out.create();
     if(o.format == Format::OFF) {
       out.put("OFF\n", 4);
       out.put_uint(nv_); out.put(" ", 1); out.put_uint(nt_); out.put(" 0\n", 3);
-      copy_part(out, o.vertices());
-      copy_part(out, o.triangles());
+      internal::streaming_copy(out, o.vertices());
+      internal::streaming_copy(out, o.triangles());
     } else if(o.format == Format::MSH) {
-      if(content_.tagged) write_tagged_msh(out, o);
-      else write_msh(out, o);
+      if(content_.tagged) internal::streaming_write_tagged_msh(out, o, t);
+      else internal::streaming_write_msh(out, o, t);
     } else {
-      write_vtu(out, o);
+      internal::streaming_write_vtu(out, o, t);
     }
     out.close(true);
   }
 
-  static void copy_part(internal::Streaming_file& out, const internal::Streaming_file& part)
-  {
-    internal::streaming_copy_part(out, part.path(), part.size());
-  }
-
-  // The .node and .ele parts get their counts: they are the temporary files
-  // of the final ones (no copy of the largest files); the .edge file is
-  // written from the segments.
-  void finish_node_ele(internal::Streaming_output& o)
-  {
-    typedef internal::Streaming_output Output;
-    internal::streaming_patch_count(o.vertices().path(), nv_);
-    internal::streaming_patch_count(o.triangles().path(), nt_);
-    if(!content_.tagged) return;
-    internal::Streaming_file edge(Output::temporary(o.base + ".edge"));
-    edge.create();
-    edge.put_uint(segments_.size());
-    edge.put(" 1\n");
-    for(std::size_t s = 0; s < segments_.size(); ++s) {
-      edge.put_uint(s + 1); edge.put(" ", 1);
-      edge.put_uint(segments_[s][0] + 1); edge.put(" ", 1);
-      edge.put_uint(segments_[s][1] + 1); edge.put(" ", 1);
-      put_int(edge, segment_markers_[s]);
-      edge.put("\n", 1);
-    }
-    edge.close(true);
-  }
-
-  static void put_int(internal::Streaming_file& f, long long v)
-  {
-    char* c = f.reserve(internal::streaming_max_uint_chars + 2);
-    f.commit(std::to_chars(c, c + internal::streaming_max_uint_chars + 2, v).ptr);
-  }
-
-  void put_box(internal::Streaming_file& out) const
-  {
-    out.put_double(xmin_); out.put(" ", 1); out.put_double(ymin_); out.put(" 0 ", 3);
-    out.put_double(xmax_); out.put(" ", 1); out.put_double(ymax_); out.put(" 0", 2);
-  }
-
-  void put_msh_nodes(internal::Streaming_file& out, internal::Streaming_output& o)
-  {
-    out.put("$Nodes\n");
-    if(nv_ == 0) {
-      out.put("0 0 0 0\n");
-    } else {
-      out.put("1 "); out.put_uint(nv_); out.put(" 1 "); out.put_uint(nv_);
-      out.put("\n2 1 0 "); out.put_uint(nv_); out.put("\n");
-      for(std::uint64_t i = 1; i <= nv_; ++i) {
-        char* p = out.reserve(internal::streaming_max_uint_chars + 1);
-        p = internal::streaming_format_uint(p, i);
-        *p++ = '\n';
-        out.commit(p);
-      }
-      copy_part(out, o.vertices());
-    }
-    out.put("$EndNodes\n");
-  }
-
-  // The layout of write_gmsh_msh().
-  void write_msh(internal::Streaming_file& out, internal::Streaming_output& o)
-  {
-    out.put("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-    out.put("$Entities\n0 0 1 0\n1 ");
-    put_box(out);
-    out.put(" 0 0\n$EndEntities\n");
-    put_msh_nodes(out, o);
-    out.put("$Elements\n");
-    if(nt_ == 0) {
-      out.put("0 0 0 0\n");
-    } else {
-      out.put("1 "); out.put_uint(nt_); out.put(" 1 "); out.put_uint(nt_);
-      out.put("\n2 1 2 "); out.put_uint(nt_); out.put("\n");
-      copy_part(out, o.triangles());
-    }
-    out.put("$EndElements\n");
-  }
-
-  // The layout of write_gmsh_msh() with markers and regions: a curve per
-  // segment marker, a surface per region attribute that has triangles (one,
-  // "domain", without regions), each in its physical group.
-  void write_tagged_msh(internal::Streaming_file& out, internal::Streaming_output& o)
-  {
-    std::map<double, std::vector<std::size_t> > by_marker, by_attribute;
-    for(std::size_t s = 0; s < segments_.size(); ++s) by_marker[segment_markers_[s]].push_back(s);
-    // the items of a surface: its group (its part file)
-    if(content_.has_regions()) {
-      for(std::size_t g = 0; g < content_.attributes.size(); ++g)
-        if(group_counts_[g] > 0) by_attribute[content_.attributes[g]].push_back(g);
-    } else if(nt_ > 0) {
-      by_attribute[1.].push_back(0);
-    }
-    std::vector<internal::Msh_group> curves = internal::msh_groups(by_marker, "marker_");
-    std::vector<internal::Msh_group> surfaces = internal::msh_groups(by_attribute, "region_");
-    if(!content_.has_regions() && !surfaces.empty()) surfaces[0].name = "domain";
-
-    out.put("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-    out.put("$PhysicalNames\n"); out.put_uint(curves.size() + surfaces.size()); out.put("\n");
-    for(int dim = 1; dim <= 2; ++dim)
-      for(const internal::Msh_group& g : dim == 1 ? curves : surfaces) {
-        out.put(dim == 1 ? "1 " : "2 "); put_int(out, g.physical);
-        out.put(" \""); out.put(g.name); out.put("\"\n");
-      }
-    out.put("$EndPhysicalNames\n");
-    out.put("$Entities\n0 "); out.put_uint(curves.size()); out.put(" "); out.put_uint(surfaces.size());
-    out.put(" 0\n");
-    for(int dim = 1; dim <= 2; ++dim) {
-      const std::vector<internal::Msh_group>& groups = dim == 1 ? curves : surfaces;
-      for(std::size_t e = 0; e < groups.size(); ++e) {
-        out.put_uint(e + 1); out.put(" ", 1); put_box(out);
-        out.put(" 1 "); put_int(out, groups[e].physical); out.put(" 0\n");
-      }
-    }
-    out.put("$EndEntities\n");
-    if(surfaces.empty()) {
-      out.put("$Nodes\n0 0 0 0\n$EndNodes\n");
-    } else {
-      put_msh_nodes(out, o);
-    }
-    const std::uint64_t ne = segments_.size() + nt_;
-    out.put("$Elements\n");
-    if(ne == 0) {
-      out.put("0 0 0 0\n");
-    } else {
-      out.put_uint(curves.size() + surfaces.size()); out.put(" "); out.put_uint(ne);
-      out.put(" 1 "); out.put_uint(ne); out.put("\n");
-      for(std::size_t c = 0; c < curves.size(); ++c) {
-        out.put("1 "); out.put_uint(c + 1); out.put(" 1 "); out.put_uint(curves[c].items.size()); out.put("\n");
-        for(std::size_t s : curves[c].items) {
-          out.put_uint(nt_ + s + 1); out.put(" ", 1);
-          out.put_uint(segments_[s][0] + 1); out.put(" ", 1);
-          out.put_uint(segments_[s][1] + 1); out.put("\n", 1);
-        }
-      }
-      for(std::size_t s = 0; s < surfaces.size(); ++s) {
-        std::uint64_t n = 0;
-        for(std::size_t g : surfaces[s].items) n += content_.has_regions() ? group_counts_[g] : nt_;
-        out.put("2 "); out.put_uint(s + 1); out.put(" 2 "); out.put_uint(n); out.put("\n");
-        for(std::size_t g : surfaces[s].items) copy_part(out, o.triangles(g));
-      }
-    }
-    out.put("$EndElements\n");
-  }
-
-  // The layout of write_mesh_VTU() (Vtu_layout.h), in the numbering received.
-  void write_vtu(internal::Streaming_file& out, internal::Streaming_output& o)
-  {
-    typedef internal::Vtu_section Section;
-    const bool binary = content_.binary;
-    const std::uint64_t nt = nt_, ns = content_.tagged ? segments_.size() : 0;
-    // one line or one raw value per item
-    auto put_value = [&out, binary](auto v) {
-      if(binary) {
-        put_raw(out, v);
-      } else {
-        char b[internal::streaming_max_double_chars + 1];
-        char* e = std::to_chars(b, b + sizeof(b) - 1, v).ptr;
-        *e++ = '\n';
-        out.put(b, static_cast<std::size_t>(e - b));
-      }
-    };
-    std::vector<internal::Vtu_array> arrays;
-    arrays.push_back({Section::POINTS, "type=\"Float64\" NumberOfComponents=\"3\"", 24 * nv_,
-                      [&] { copy_part(out, o.vertices()); }});
-    arrays.push_back({Section::CELLS, "type=\"Int64\" Name=\"connectivity\"", 8 * (3 * nt + 2 * ns), [&] {
-      copy_part(out, o.triangles());
-      for(std::uint64_t s = 0; s < ns; ++s) {
-        if(binary) {
-          put_raw(out, std::int64_t(segments_[s][0]));
-          put_raw(out, std::int64_t(segments_[s][1]));
-        } else {
-          out.put_uint(segments_[s][0]); out.put(" ", 1); out.put_uint(segments_[s][1]); out.put("\n", 1);
-        }
-      }
-    }});
-    arrays.push_back({Section::CELLS, "type=\"Int64\" Name=\"offsets\"", 8 * (nt + ns), [&] {
-      for(std::uint64_t t = 1; t <= nt; ++t) put_value(std::int64_t(3 * t));
-      for(std::uint64_t s = 1; s <= ns; ++s) put_value(std::int64_t(3 * nt + 2 * s));
-    }});
-    arrays.push_back({Section::CELLS, "type=\"UInt8\" Name=\"types\"", nt + ns, [&] {
-      for(std::uint64_t t = 0; t < nt; ++t) binary ? put_raw(out, std::uint8_t(5)) : out.put("5\n", 2);
-      for(std::uint64_t s = 0; s < ns; ++s) binary ? put_raw(out, std::uint8_t(3)) : out.put("3\n", 2);
-    }});
-    if(content_.tagged) {
-      arrays.push_back({Section::POINT_DATA, "type=\"Int32\" Name=\"marker\"", 4 * nv_,
-                        [&] { copy_part(out, o.vertex_markers->file); }});
-      arrays.push_back({Section::CELL_DATA, "type=\"Int32\" Name=\"marker\"", 4 * (nt + ns), [&] {
-        for(std::uint64_t t = 0; t < nt; ++t) put_value(std::int32_t(0));
-        for(int m : segment_markers_) put_value(std::int32_t(m));
-      }});
-      if(content_.has_regions())
-        arrays.push_back({Section::CELL_DATA, "type=\"Float64\" Name=\"region\"", 8 * (nt + ns), [&] {
-          copy_part(out, o.triangle_attributes->file);
-          for(std::uint64_t s = 0; s < ns; ++s) put_value(0.);
-        }});
-    }
-    internal::vtu_write(out, nv_, nt + ns, arrays, binary);
-  }
 
   std::vector<std::string> file_names_;
   internal::Streaming_content content_;
