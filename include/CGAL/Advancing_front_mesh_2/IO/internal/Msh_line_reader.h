@@ -167,29 +167,14 @@ public:
   }
 
 private:
+  // Reads one physical line (the format has no comments); false at the end of input.
   bool read_line()
   {
-    typedef std::char_traits<char> Traits;
-    line_.clear();
-    if(at_end_) return false;
-    if(Traits::eq_int_type(buf_->sgetc(), Traits::eof())) {
-      at_end_ = true;
-      return false;
-    }
-    ++line_no_;
-    for(;;) {
-      const Traits::int_type c = buf_->sbumpc();
-      if(Traits::eq_int_type(c, Traits::eof())) {
-        at_end_ = true;
-        break;
-      }
-      const char ch = Traits::to_char_type(c);
-      if(ch == '\n') break;
-      if(line_.size() >= msh_max_line_length)
-        fail("line is longer than " + std::to_string(msh_max_line_length) + " characters");
-      line_ += ch;
-    }
-    return true;
+    bool too_long = false;
+    const bool got = poly_read_physical_line(buf_, msh_max_line_length, '\0', line_, line_no_, at_end_, too_long);
+    if(too_long)
+      fail("line is longer than " + std::to_string(msh_max_line_length) + " characters");
+    return got;
   }
 
   static bool is_blank(char c) { return poly_is_blank(c); }

@@ -143,6 +143,49 @@ inline bool poly_parse_real(const std::string& token, double& value)
 // '\r' is blank so that files written on Windows read the same.
 inline bool poly_is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
+// Reads one physical line of `buf` into `line`, without its end and, when
+// `comment` is not '\0', without what follows that character; counts it in
+// `line_no`; false (and `at_end` set) at the end of input. Stops with
+// `too_long` set once the line holds more than `max_length` characters, so
+// that binary garbage without a newline is not buffered whole.
+inline bool poly_read_physical_line(std::streambuf* buf, std::size_t max_length, char comment, std::string& line,
+                                    std::size_t& line_no, bool& at_end, bool& too_long)
+{
+  typedef std::char_traits<char> Traits;
+  line.clear();
+  too_long = false;
+  if(at_end)
+    return false;
+  if(Traits::eq_int_type(buf->sgetc(), Traits::eof())) {
+    at_end = true;
+    return false;
+  }
+  ++line_no;
+  bool in_comment = false;
+  for(;;) {
+    const Traits::int_type c = buf->sbumpc();
+    if(Traits::eq_int_type(c, Traits::eof())) {
+      at_end = true;
+      break;
+    }
+    const char ch = Traits::to_char_type(c);
+    if(ch == '\n')
+      break;
+    if(in_comment)
+      continue;
+    if(comment != '\0' && ch == comment) {
+      in_comment = true;
+      continue;
+    }
+    if(line.size() >= max_length) {
+      too_long = true;
+      break;
+    }
+    line += ch;
+  }
+  return true;
+}
+
 // The tokens of `line` (separated by blanks), as [begin, end) positions.
 inline void poly_split_tokens(const std::string& line, std::vector<std::pair<std::size_t, std::size_t> >& tokens)
 {
@@ -262,37 +305,11 @@ private:
   // Reads one physical line without its comment; false at the end of input.
   bool read_line()
   {
-    typedef std::char_traits<char> Traits;
-    line_.clear();
-    if(at_end_)
-      return false;
-    if(Traits::eq_int_type(buf_->sgetc(), Traits::eof())) {
-      at_end_ = true;
-      return false;
-    }
-    ++line_no_;
-    bool in_comment = false;
-    for(;;) {
-      const Traits::int_type c = buf_->sbumpc();
-      if(Traits::eq_int_type(c, Traits::eof())) {
-        at_end_ = true;
-        break;
-      }
-      const char ch = Traits::to_char_type(c);
-      if(ch == '\n')
-        break;
-      if(in_comment)
-        continue;
-      if(ch == '#') {
-        in_comment = true;
-        continue;
-      }
-      if(line_.size() >= poly_max_line_length)
-        fail("line is longer than " + std::to_string(poly_max_line_length) +
-             " characters");
-      line_ += ch;
-    }
-    return true;
+    bool too_long = false;
+    const bool got = poly_read_physical_line(buf_, poly_max_line_length, '#', line_, line_no_, at_end_, too_long);
+    if(too_long)
+      fail("line is longer than " + std::to_string(poly_max_line_length) + " characters");
+    return got;
   }
 
   static bool is_blank(char c) { return poly_is_blank(c); }
