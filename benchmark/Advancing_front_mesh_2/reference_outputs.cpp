@@ -76,6 +76,9 @@ std::size_t mesh_in_memory(const std::string& label, const Poly_data& in, const 
   afm_test::build_cdt(cdt, in);
   const auto seeds = afm_test::seeds_of<CDT>(in);
   CGAL::Advancing_front_mesher_2<CDT, Sizing> mesher(cdt, sizing);
+  // the paper's mode, in which the manual's figures were measured (these
+  // inputs' boundaries are at the size)
+  mesher.set_constraint_splitting(false);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_pocket_priority(pockets);
   if(mesher.refine_mesh() != AFM::MESH_COMPLETE) throw std::runtime_error(label + ": not complete");
@@ -97,6 +100,9 @@ void mesh_streaming(const std::string& label, const Poly_data& in, const Sizing&
   const auto seeds = afm_test::seeds_of<CDT>(in);
   AFM::IO::Streaming_mesh_writer<typename CDT::Point> writer(std::vector<std::string>{base + ".off"});
   CGAL::Advancing_front_mesher_2<CDT, Sizing> mesher(cdt, sizing);
+  // the paper's mode, in which the manual's figures were measured (these
+  // inputs' boundaries are at the size)
+  mesher.set_constraint_splitting(false);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_output_sink(&writer);
   // small sweeps and checkpoints: a few of them even on small meshes

@@ -46,8 +46,14 @@ the local size bound, or a new point is placed ahead of the front along the
 edge's perpendicular bisector and all Delaunay triangles it forms with nearby
 front points are built at once. Triangles exist only behind the front, every
 operation is local, and every combinatorial decision uses the traits' exact
-predicates. Input constraints are never split, and the result is a
-constrained Delaunay triangulation of its vertices.
+predicates. The result is a constrained Delaunay triangulation of its
+vertices.
+
+Before the front is built, constraints longer than the local size are split
+to the sizing field (`set_constraint_splitting()`, the boundary
+discretisation of `split_constraints_to_size_2()`); the paper takes the
+boundary discretisation as given, and with splitting off every input
+segment stays one edge.
 
 The mesh is built directly in the triangulation data structure of `cdt`:
 the in-domain faces are removed, the front advances over the emptied region,
@@ -171,6 +177,27 @@ public:
   /// Measures the time of each phase into `statistics().phase_times`
   /// (off by default: it reads the clock at every phase change).
   void set_phase_timing(bool on) { refiner_.set_phase_timing(on); }
+
+  /*!
+  Splits the constraints that bound or cross the domain to the sizing field
+  before the front is built (on by default): the boundary discretisation of
+  `split_constraints_to_size_2()`, so that a boundary given by a few long
+  segments is meshed at the size asked for. Off, every input segment is one
+  edge of the initial front, as in the paper, and the mesh is coarse and
+  poor wherever segments are much longer than the local size. The splits
+  made are in `constraint_split_statistics()`.
+  */
+  void set_constraint_splitting(bool on)
+  {
+    refiner_.split_constraints = on;
+    refiner_.invalidate();
+  }
+  bool constraint_splitting() const { return refiner_.split_constraints; }
+  /// what the boundary discretisation of the last `init()` did
+  const Advancing_front_mesh_2::Constraint_split_statistics& constraint_split_statistics() const
+  {
+    return refiner_.split_statistics;
+  }
 
   /// Meshes the pockets of the front first (on by default): regions of the
   /// unmeshed domain that the front closes off from the rest are meshed as
@@ -399,6 +426,13 @@ Meshes the domain of `cdt` (seeds as in `refine_Delaunay_mesh_2()`: with
     \cgalParamDescription{stop after this many seconds (0: no limit)}
     \cgalParamDefault{0}
   \cgalParamNEnd
+  \cgalParamNBegin{protect_constraints}
+    \cgalParamDescription{if `true`, the input constraints are not split: every
+      one stays an edge of the mesh, as in the paper (Triangle's `-Y`); if
+      `false`, constraints longer than the local size are split to the size
+      first, as Mesh_2 splits them (see `split_constraints_to_size_2()`)}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns how the run ended; the triangulation is a valid mesh in every case.
@@ -423,6 +457,7 @@ advancing_front_mesh_2(CDT& cdt, InputIterator seeds_begin, InputIterator seeds_
   mesher.set_seeds(seeds_begin, seeds_end, mark);
   mesher.set_iteration_limit(choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(0)));
   mesher.set_time_limit(choose_parameter(get_parameter(np, internal_np::maximum_running_time), 0.));
+  mesher.set_constraint_splitting(!choose_parameter(get_parameter(np, internal_np::protect_constraints), false));
   return mesher.refine_mesh();
 }
 

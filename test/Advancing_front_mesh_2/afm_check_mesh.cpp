@@ -1,5 +1,7 @@
 // afm_check_mesh INPUT.poly MESH.off: runs the independent validity checker
-// on a mesh written by afmesh_2. Exit 0 when valid, 1 otherwise.
+// on a mesh written by afmesh_2, whose input segments may be split (each
+// must be covered by a chain of mesh edges). Exit 0 when valid, 1 otherwise.
+#include "afm_split_segments.h"
 #include "afm_validity_checker.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
@@ -43,7 +45,7 @@ int main(int argc, char* argv[])
     std::cerr << argv[2] << ": truncated\n";
     return 1;
   }
-  const auto report = afm_check::check_mesh(pslg, mesh);
+  const auto report = afm_check::check_mesh(afm_check::split_at_mesh_vertices(pslg, mesh), mesh);
   std::cout << report.summary() << "\n";
   return report.ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

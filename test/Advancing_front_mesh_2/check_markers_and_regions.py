@@ -13,6 +13,7 @@ in-memory and the streamed run, and with the input.
 
 usage: check_markers_and_regions.py AFMESH MAKE_INPUT CHECK WORK_DIR [SHARED_DATA_DIR]
 """
+import math
 import os
 import sys
 
@@ -254,8 +255,23 @@ if SHARED and os.path.exists(la_in):
     for r in rows[n + 2:n + 2 + ns]:
         a, b = (float(rows[int(r[1])][1]), float(rows[int(r[1])][2])), (float(rows[int(r[2])][1]), float(rows[int(r[2])][2]))
         in_seg[frozenset((a, b))] = int(r[3])
-    mesh_seg = {frozenset((tuple(pts[s[0]]), tuple(pts[s[1]]))): k for s, k in zip(seg, smark)}
-    wrong = [s for s, k in in_seg.items() if mesh_seg.get(s) != (k if k != 0 else mesh_seg.get(s))]
+    # an input segment is one mesh segment, or a chain of them when the
+    # boundary discretisation split it: the pieces lying on it cover it, and
+    # each has its marker (a nonzero one as given)
+    def on(a, b, p):
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        l2 = dx * dx + dy * dy
+        t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2
+        return -1e-12 <= t <= 1 + 1e-12 and abs(dx * (p[1] - a[1]) - dy * (p[0] - a[0])) <= 1e-12 * l2
+    mesh_segs = [(tuple(pts[s[0]]), tuple(pts[s[1]]), k) for s, k in zip(seg, smark)]
+    wrong = []
+    for ends, k in in_seg.items():
+        a, b = tuple(ends)
+        pieces = [(p, q, m) for p, q, m in mesh_segs if on(a, b, p) and on(a, b, q)]
+        covered = sum(math.dist(p, q) for p, q, _ in pieces)
+        if abs(covered - math.dist(a, b)) > 1e-9 * math.dist(a, b) or \
+                len(set(m for _, _, m in pieces)) != 1 or (k != 0 and pieces[0][2] != k):
+            wrong.append(ends)
     check(not wrong, "la: every input segment keeps its marker (%d do not)" % len(wrong))
     # its six regions have five attributes (two are 0.05)
     check(set(attr.tolist()) - {0.0} == {0.05, 0.2, 0.4, 0.8, 3.0}, "la: the regions are found")

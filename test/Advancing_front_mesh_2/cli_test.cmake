@@ -419,4 +419,42 @@ if(NOT LAST_ERR MATCHES "^afmesh_2: error: .*garbage.ckpt: ")
   message(FATAL_ERROR "a bad checkpoint: ${LAST_ERR}")
 endif()
 expect_exit(1 ${AFMESH} --resume ${WORK_DIR}/missing.ckpt)
+# the boundary discretisation: the unit square given by its four corners, at
+# --size 0.01, comes out at the size (about 23,000 triangles, at least 97% of
+# edges within [h/sqrt2, h sqrt2], mean radius ratio at least 0.99), in
+# memory and streamed; --keep-segments keeps the paper's 4 triangles and says
+# why they are so large
+file(WRITE ${WORK_DIR}/unit.poly "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 1\n1 1 2 7\n2 2 3 7\n3 3 4 7\n4 4 1 7\n0\n")
+expect_exit(0 ${AFMESH} ${WORK_DIR}/unit.poly --size 0.01 -o ${WORK_DIR}/unit.off -o ${WORK_DIR}/unit.node --stats)
+string(JSON unit_triangles GET "${LAST_OUT}" triangles)
+string(JSON unit_within GET "${LAST_OUT}" quality share_edges_within_sqrt2)
+string(JSON unit_mean GET "${LAST_OUT}" quality mean_radius_ratio)
+string(JSON unit_cuts GET "${LAST_OUT}" boundary_discretisation points_inserted)
+string(JSON unit_kept GET "${LAST_OUT}" boundary_discretisation keep_segments)
+if(unit_triangles LESS 21000 OR unit_triangles GREATER 25000 OR unit_within LESS 0.97 OR unit_mean LESS 0.99
+   OR NOT unit_cuts EQUAL 396 OR unit_kept)
+  message(FATAL_ERROR "the unit square at --size 0.01: ${LAST_OUT}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/unit.poly ${WORK_DIR}/unit.off)
+# the cuts carry their segment's marker: 4 x 100 boundary edges marked 7
+file(STRINGS ${WORK_DIR}/unit.edge unit_edges REGEX " 7$")
+list(LENGTH unit_edges unit_marked)
+if(NOT unit_marked EQUAL 400)
+  message(FATAL_ERROR "unit.edge: ${unit_marked} edges with the segments' marker 7, expected 400")
+endif()
+expect_exit(0 ${AFMESH} ${WORK_DIR}/unit.poly --size 0.01 --stream -o ${WORK_DIR}/unit_streamed.off)
+file(READ ${WORK_DIR}/unit_streamed.off unit_streamed_off LIMIT 64)
+if(NOT unit_streamed_off MATCHES "^OFF\n[0-9]+ ${unit_triangles} 0")
+  message(FATAL_ERROR "streamed unit square: not ${unit_triangles} triangles: ${unit_streamed_off}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/unit.poly ${WORK_DIR}/unit_streamed.off)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/unit.poly --size 0.01 --keep-segments -o ${WORK_DIR}/unit_kept.off --stats)
+string(JSON kept_triangles GET "${LAST_OUT}" triangles)
+string(JSON kept_long GET "${LAST_OUT}" boundary_discretisation long_kept_segments)
+if(NOT kept_triangles EQUAL 4 OR NOT kept_long EQUAL 4
+   OR NOT LAST_ERR MATCHES "--keep-segments: 4 segments are longer than 1.5 local sizes \\(the longest spans about 100\\)")
+  message(FATAL_ERROR "--keep-segments: ${LAST_OUT}\n${LAST_ERR}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/unit.poly ${WORK_DIR}/unit_kept.off)
+
 message(STATUS "afmesh_2 command-line interface: all checks passed")

@@ -234,10 +234,13 @@ AFM_TEST_CASE(test_hard_input_constraint_star_centre_costs_no_more_with_more_spo
     auto seeds = afm_test::seeds_of<CDT>(in);
     afm_test::Mesher<CDT, Sizing> mesher(cdt, afm_test::uniform<K>(0.05));
     mesher.set_seeds(seeds.begin(), seeds.end());
+    // the paper's mode, whose cost at the hub this test bounds (split to the
+    // size, the spokes' cuts crowd the centre: see the manual, Hard Inputs)
+    mesher.set_constraint_splitting(false);
     mesher.refine_mesh();
     const std::size_t count = orientation_count;
     const afm_check::Mesh mesh = afm_test::extract_mesh(cdt);
-    const afm_check::Report report = afm_check::check_mesh(afm_test::to_pslg(in), mesh);
+    const afm_check::Report report = afm_test::check_split_mesh(in, mesh);
     AFM_CHECK_MSG(report.ok, report.summary());
     per_triangle[i] = double(count) / double(mesh.triangles.size());
     std::cout << "  star of " << spokes[i] << " spokes: " << report.summary() << ", orientation tests per triangle "

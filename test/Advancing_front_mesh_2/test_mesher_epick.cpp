@@ -186,9 +186,9 @@ AFM_TEST_CASE(test_repaired_input_meshes)
   mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
   AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
   AFM_CHECK(cdt.is_valid());
-  const auto report = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
+  const auto report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
   AFM_CHECK_MSG(report.ok, report.summary());
-  // the sides are not split (input segments are kept): about 140 triangles
+  // the sides are split to the size (the boundary discretisation)
   AFM_CHECK_MSG(mesher.statistics().number_of_faces > 100, mesher.statistics().number_of_faces);
 }
 
@@ -211,7 +211,7 @@ AFM_TEST_CASE(test_segment_between_two_holes)
   mesher.set_seeds(inserted.hole_seeds.begin(), inserted.hole_seeds.end());
   AFM_CHECK(mesher.refine_mesh() == CGAL::Advancing_front_mesh_2::MESH_COMPLETE);
   AFM_CHECK(cdt.is_valid());
-  const auto report = afm_check::check_mesh(afm_test::refined_pslg(cdt, in), afm_test::extract_mesh(cdt));
+  const auto report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
   AFM_CHECK_MSG(report.ok, report.summary());
   double area = 0;
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
@@ -273,14 +273,14 @@ AFM_TEST_CASE(test_free_function_size_forms)
     CDT cdt;
     afm_test::build_cdt(cdt, in);
     CGAL::advancing_front_mesh_2(cdt, [](const Point& p) { return K::FT(0.05 + 0.05 * p.x()); });
-    AFM_CHECK(afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt)).ok);
+    AFM_CHECK(afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt)).ok);
   }
   // a Mesh_2 criteria object: h = 0.7 * size bound
   {
     CDT cdt;
     afm_test::build_cdt(cdt, in);
     CGAL::advancing_front_mesh_2(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(0.125, 0.1));
-    const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+    const auto rep = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
     AFM_CHECK_MSG(rep.ok, rep.summary());
   }
   // invalid sizes are reported, not crashed on, and the triangulation is
@@ -301,7 +301,7 @@ AFM_TEST_CASE(test_free_function_size_forms)
     AFM_CHECK_MSG(thrown, "mode " << mode);
     AFM_CHECK(cdt.is_valid());
     if(mode > 0) {
-      const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+      const auto rep = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
       AFM_CHECK_MSG(rep.ok, "mode " << mode << ": " << rep.summary());
     }
   }
@@ -317,7 +317,7 @@ AFM_TEST_CASE(test_limits_return_codes_and_valid_mesh)
                                                CGAL::parameters::number_of_iterations(200));
   AFM_CHECK(rc == CGAL::Advancing_front_mesh_2::ITERATION_LIMIT_REACHED);
   AFM_CHECK(cdt.is_valid());
-  const auto rep = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+  const auto rep = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
   AFM_CHECK_MSG(rep.ok, rep.summary());
 
   // the time limit (checked every 64 steps, the first time before the first
@@ -328,7 +328,7 @@ AFM_TEST_CASE(test_limits_return_codes_and_valid_mesh)
                                                     CGAL::parameters::maximum_running_time(1e-12));
   AFM_CHECK_MSG(rc_time == CGAL::Advancing_front_mesh_2::TIME_LIMIT_REACHED, int(rc_time));
   AFM_CHECK(timed.is_valid());
-  const auto rep_time = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(timed));
+  const auto rep_time = afm_test::check_split_mesh(in, afm_test::extract_mesh(timed));
   AFM_CHECK_MSG(rep_time.ok, rep_time.summary());
 }
 

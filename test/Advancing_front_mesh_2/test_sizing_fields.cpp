@@ -403,7 +403,7 @@ AFM_TEST_CASE(test_mesh_2_criteria_with_poisson_field)
   auto seeds = afm_test::seeds_of<CDT>(in);
   CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), Criteria(f));
   const afm_check::Mesh m = afm_test::extract_mesh(cdt);
-  const afm_check::Report rep = afm_check::check_mesh(afm_test::to_pslg(in), m);
+  const afm_check::Report rep = afm_test::check_split_mesh(in, m);
   std::cout << "  Mesh_2 with the Poisson field: " << rep.summary() << "\n";
   AFM_CHECK_MSG(rep.ok, rep.summary());
   // every triangle meets the size bound at its centroid: longest edge <= h / 0.7

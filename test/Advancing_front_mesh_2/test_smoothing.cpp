@@ -43,10 +43,10 @@ afm_check::Report smooth_and_check(Tr& cdt, const afm_test::Poly_data& in, std::
                                    CGAL::Advancing_front_mesh_2::Smoothing_statistics* out = nullptr)
 {
   label = name(smoother) + ", " + label;
-  const afm_check::Report before = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+  const afm_check::Report before = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
   const auto st = smooth(cdt, smoother, CGAL::parameters::number_of_iterations(passes));
   AFM_CHECK(cdt.is_valid());
-  const afm_check::Report after = afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(cdt));
+  const afm_check::Report after = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
   std::cout << "  " << label << ", before: " << before.summary() << "\n  " << label << ", after " << passes
             << " passes (" << st.moves << " moves, " << st.flips << " flips): " << after.summary() << "\n";
   AFM_CHECK_MSG(after.ok, label << ": " << after.summary());

@@ -185,7 +185,7 @@ void check_streaming(const afm_test::Poly_data& in, const Sizing& sizing, const 
   for(const auto& t : sink.triangles)
     for(std::size_t v : t) used[v] = true;
   AFM_CHECK_MSG(std::find(used.begin(), used.end(), false) == used.end(), label << ": a vertex no triangle uses");
-  const afm_check::Report report = afm_check::check_mesh(afm_test::to_pslg(in), sink.mesh());
+  const afm_check::Report report = afm_test::check_split_mesh(in, sink.mesh());
   AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
   std::cout << "  " << label << ": " << sink.triangles.size() << " triangles, at most "
             << st.largest_triangles_in_memory << " in memory, " << st.stream_sweeps << " sweeps\n";

@@ -17,13 +17,17 @@
 #include <CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Region_sizing_field_2.h>
 #include <CGAL/Advancing_front_mesh_2/Sampled_sizing_field_2.h>
+#include <CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_2.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <iostream>
 #include <iterator>
@@ -81,7 +85,7 @@ struct Cli_sizing_field
 // Where the time of the run went before meshing (seconds).
 struct Input_times
 {
-  double read = 0, boundary = 0, size_field = 0;
+  double read = 0, boundary = 0, size_field = 0, boundary_split = 0;
 };
 
 // The input as the mesher needs it.
@@ -95,6 +99,10 @@ struct Input
   AFM::Markers_and_regions_2<CDT> tags;
   std::list<typename K::Point_2> seeds;
   Cli_sizing_field<K> sizing;
+  AFM::Constraint_split_statistics split;
+  // with --keep-segments: the segments longer than 1.5 local sizes, and the
+  // largest number of sizes one of them spans
+  std::size_t long_kept_segments = 0, longest_kept_segment_in_sizes = 0;
   Input_times times;
 };
 
@@ -210,6 +218,56 @@ template <class K>
 void make_size_field(const Options& opt, Input<K>& in)
 {
   make_size_field(opt, in, read_sources<K>(opt));
+}
+
+// Whether a constrained edge bounds or crosses the domain (the others are
+// not meshed, so neither split nor counted).
+template <class CDT>
+bool touches_domain(const CDT& cdt, const typename CDT::Edge& e)
+{
+  const auto f = e.first, g = f->neighbor(e.second);
+  return (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain());
+}
+
+// The boundary discretisation: the segments split to the size field, their
+// markers carried over; with --keep-segments only a count, and a note when
+// segments much longer than the local size stay whole.
+template <class K>
+void split_boundary(const Options& opt, Input<K>& in)
+{
+  typedef typename Types<K>::CDT CDT;
+  const auto in_domain = [&](const typename CDT::Edge& e) { return touches_domain(in.cdt, e); };
+  if(!opt.keep_segments) {
+    in.split = AFM::split_constraints_to_size_2(
+      in.cdt, in.sizing, in_domain,
+      [&](typename CDT::Vertex_handle a, typename CDT::Vertex_handle b, typename CDT::Vertex_handle v) {
+        in.tags.split_constraint(a, b, v);
+      });
+    // the faces the cuts made are marked as the input's were (the tagging
+    // sink of a streamed run reads the regions and the boundary from them)
+    if(in.split.points_inserted > 0)
+      CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> >::mark_facets(in.cdt, in.seeds.begin(),
+                                                                                     in.seeds.end());
+    return;
+  }
+  for(const auto& e : in.cdt.constrained_edges()) {
+    if(!in_domain(e)) continue;
+    const auto& p = e.first->vertex(CDT::ccw(e.second))->point();
+    const auto& q = e.first->vertex(CDT::cw(e.second))->point();
+    const double ax = CGAL::to_double(p.x()), ay = CGAL::to_double(p.y());
+    const double bx = CGAL::to_double(q.x()), by = CGAL::to_double(q.y());
+    const std::size_t pieces = AFM::internal::segment_cut_parameters(std::hypot(bx - ax, by - ay), [&](double t) {
+      return CGAL::to_double(in.sizing(typename K::Point_2(ax + t * (bx - ax), ay + t * (by - ay))));
+    }).size() + 1;
+    if(pieces < 2) continue;
+    ++in.long_kept_segments;
+    in.longest_kept_segment_in_sizes = (std::max)(in.longest_kept_segment_in_sizes, pieces);
+  }
+  if(in.long_kept_segments > 0)
+    std::cerr << "afmesh_2: note: " << opt.input << ": --keep-segments: " << in.long_kept_segments
+              << " segments are longer than 1.5 local sizes (the longest spans about "
+              << in.longest_kept_segment_in_sizes
+              << "); the triangles along them are larger and flatter than the size asks\n";
 }
 
 } // namespace afmesh_2

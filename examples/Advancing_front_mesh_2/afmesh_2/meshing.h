@@ -65,6 +65,9 @@ void load_input(const Options& opt, Input<K>& in)
   const auto t_field = std::chrono::steady_clock::now();
   make_size_field(opt, in);
   in.times.size_field = seconds_since(t_field);
+  const auto t_split = std::chrono::steady_clock::now();
+  split_boundary(opt, in);
+  in.times.boundary_split = seconds_since(t_split);
 }
 
 // A checkpoint that cannot be written must show before any output is
@@ -121,6 +124,8 @@ template <class K>
 void configure(const Options& opt, const Input<K>& in, Mesher<K>& mesher)
 {
   mesher.set_seeds(in.seeds.begin(), in.seeds.end());
+  // the boundary was split (or kept) by load_input(), with the markers
+  mesher.set_constraint_splitting(false);
   mesher.set_pocket_priority(!opt.no_pocket_priority);
   mesher.set_time_limit(opt.time_limit);
   mesher.set_iteration_limit(opt.max_steps);

@@ -49,6 +49,7 @@ struct Options
   bool stats = false;
   bool report = false;
   bool no_pocket_priority = false;
+  bool keep_segments = false; // --keep-segments: no boundary discretisation, as Triangle's -Y
   double time_limit = 0;     // seconds of meshing, 0: none
   std::size_t max_steps = 0; // front edges processed, 0: none
   std::size_t smooth = 0;
@@ -136,6 +137,9 @@ inline po::options_description visible_options(Command_line& c)
     ("svg-window", new Exact_tokens<4>(&c.svg_window),
      "X0 Y0 X1 Y1: SVG outputs show only this window of the mesh (a close-up)")
     ("histogram", po::value<std::string>(&opt.histogram), "write the quality histograms as SVG to this file")
+    ("keep-segments", po::bool_switch(&opt.keep_segments),
+     "keep every input segment as one mesh edge, as the paper does (Triangle's -Y); by default segments "
+     "longer than the local size are first split to the size field")
     ("no-pocket-priority", po::bool_switch(&opt.no_pocket_priority),
      "mesh the front's pockets in shortest-first order too: a little better quality "
      "where patches meet, a front up to 4 times larger")

@@ -63,7 +63,8 @@ inline void print_streamed_report(const Options& opt, const AFM::Statistics& st,
 }
 
 inline void print_report(const Options& opt, const AFM::Statistics& st, const AFM::Mesh_quality& unsmoothed,
-                         const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t)
+                         const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t,
+                         const std::string& boundary)
 {
   std::ostringstream os;
   os << std::setprecision(4);
@@ -84,7 +85,22 @@ inline void print_report(const Options& opt, const AFM::Statistics& st, const AF
   };
   if(opt.smooth > 0) line("before smoothing, ", unsmoothed);
   line("", q);
+  os << "  " << boundary << "\n";
   print_report_text(opt, os.str());
+}
+
+// The report's line on the boundary discretisation.
+template <class K>
+std::string boundary_summary(const Options& opt, const Input<K>& in)
+{
+  std::ostringstream os;
+  if(opt.keep_segments)
+    os << "boundary: input segments kept (--keep-segments); " << in.long_kept_segments
+       << " longer than 1.5 local sizes";
+  else
+    os << "boundary: " << in.split.edges_split << " segments split to the size field at "
+       << in.split.points_inserted << " new points";
+  return os.str();
 }
 
 inline Json streamed_statistics_json(const Options& opt, AFM::Mesh_return_code rc, const AFM::Statistics& st,
@@ -185,6 +201,20 @@ inline Json quality_json(const AFM::Mesh_quality& q)
   return j;
 }
 
+// What the boundary discretisation did, or with --keep-segments how many
+// segments stayed longer than 1.5 local sizes.
+template <class K>
+Json boundary_discretisation_json(const Options& opt, const Input<K>& in)
+{
+  return Json{{"keep_segments", opt.keep_segments},
+              {"edges_split", in.split.edges_split},
+              {"points_inserted", in.split.points_inserted},
+              {"points_rounded", in.split.points_rounded},
+              {"points_skipped", in.split.points_skipped},
+              {"long_kept_segments", in.long_kept_segments},
+              {"longest_kept_segment_in_sizes", in.longest_kept_segment_in_sizes}};
+}
+
 template <class K>
 Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_code rc, const AFM::Statistics& st,
                      const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t)
@@ -198,10 +228,12 @@ Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_co
   j["input_repairs"] = Json{{"merged_points", in.inserted.merged_points},
                             {"duplicate_segments", in.inserted.duplicate_segments},
                             {"points_on_segments", in.inserted.points_on_segments}};
+  j["boundary_discretisation"] = boundary_discretisation_json(opt, in);
   j["vertices"] = st.number_of_vertices;
   j["triangles"] = st.number_of_faces;
   j["time"] = Json{{"read", number(in.times.read)},       {"boundary", number(in.times.boundary)},
-                   {"size_field", number(in.times.size_field)}, {"mesh", number(t.meshing)},
+                   {"size_field", number(in.times.size_field)}, {"boundary_split", number(in.times.boundary_split)},
+                   {"mesh", number(t.meshing)},
                    {"smooth", number(t.smoothing)},       {"write", number(t.writing)},
                    {"total", number(t.total)}};
   j["triangles_per_second"] = t.meshing > 0 ? st.number_of_faces / t.meshing : 0.;

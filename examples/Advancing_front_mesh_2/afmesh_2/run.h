@@ -56,7 +56,7 @@ int finish_run_in_memory(const Options& opt, Input<K>& in, const Mesher<K>& mesh
   if(!write_outputs(opt, in.cdt, in.tags, q)) return 3;
   t.writing = seconds_since(t_write);
   const AFM::Statistics& st = mesher.statistics();
-  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t);
+  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t, boundary_summary(opt, in));
   t.total = seconds_since(t_start);
   if(opt.stats) print_statistics(statistics_json(opt, in, rc, st, q, smoothing, t));
   return 0;

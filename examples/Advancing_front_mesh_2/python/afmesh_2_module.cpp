@@ -145,6 +145,7 @@ py::dict mesh_with(const AFM::IO::Poly_data& data, const Request& request)
     for(const auto& s : request.sources) sources.emplace_back(typename K::Point_2(s[0], s[1]), s[2]);
     make_size_field(opt, in, sources);
   }
+  split_boundary(opt, in);
   Progress_visitor quiet;
   Mesher<K> mesher(in.cdt, in.sizing, quiet);
   configure(opt, in, mesher);
@@ -187,12 +188,13 @@ py::dict mesh(const py::object& vertices, const py::object& segments, const py::
               const py::object& regions, const py::object& vertex_markers, const py::object& segment_markers,
               const py::object& size, const py::object& sources, const py::object& max_size, const py::object& grading,
               const std::string& boundary_spacing, std::size_t smooth, const std::string& smoother,
-              const std::string& kernel)
+              const std::string& kernel, bool keep_segments)
 {
   const AFM::IO::Poly_data data = poly_data(vertices, segments, holes, regions, vertex_markers, segment_markers);
   Request r;
   afmesh_2::Options& opt = r.opt;
   opt.input = "PSLG";
+  opt.keep_segments = keep_segments;
   if(!size.is_none() && PyCallable_Check(size.ptr())) {
     r.size_function = size;
   } else if(!size.is_none()) {
@@ -245,6 +247,7 @@ PYBIND11_MODULE(_afmesh_2, m)
         py::arg("segment_markers") = py::none(), py::arg("size") = py::none(), py::arg("sources") = py::none(),
         py::arg("max_size") = py::none(), py::arg("grading") = 0.2, py::arg("boundary_spacing") = "grow",
         py::arg("smooth") = 0, py::arg("smoother") = "quality", py::arg("kernel") = "epick",
+        py::arg("keep_segments") = false,
         "Meshes the domain of a planar straight-line graph; see afmesh_2.mesh().");
   m.attr("__version__") = CGAL_ADVANCING_FRONT_MESH_2_VERSION_STR;
 }

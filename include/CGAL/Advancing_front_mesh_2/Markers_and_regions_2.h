@@ -37,8 +37,9 @@ from a `.poly` file's data.
 
 Vertices and constrained edges are stable through meshing and smoothing
 (the mesher inserts vertices but never removes one, and constrained edges
-are neither flipped nor split), so their markers are set once, on the
-input. Faces are not stable: `mark_regions()` finds the region of each face
+are neither flipped nor split once the front is built), so their markers
+are set once, on the input, and carried over the boundary discretisation
+with `split_constraint()`. Faces are not stable: `mark_regions()` finds the region of each face
 by a flood from the region seeds across unconstrained edges, and is called
 on the final mesh (after smoothing, before writing), as Triangle does.
 
@@ -91,6 +92,23 @@ public:
       edge_markers_.emplace(key, Given_marker{next_order_++, marker});
     else
       it->second.marker = marker;
+  }
+
+  /*!
+  carries the marker given to the constrained edge `(a, b)` over to the two
+  edges `(a, v)` and `(v, b)` it was split into at the new vertex `v` (the
+  callback of `split_constraints_to_size_2()`). The new vertex gets its
+  marker from them by the rules above, as Triangle's vertices on split
+  segments do.
+  */
+  void split_constraint(Vertex_handle a, Vertex_handle b, Vertex_handle v)
+  {
+    const auto it = edge_markers_.find(edge_key(a, b));
+    if(it == edge_markers_.end()) return;
+    const Given_marker given = it->second;
+    edge_markers_.erase(it);
+    edge_markers_[edge_key(a, v)] = given;
+    edge_markers_[edge_key(v, b)] = given;
   }
 
   /*!

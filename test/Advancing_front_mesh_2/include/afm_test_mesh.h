@@ -5,6 +5,7 @@
 #define AFM_TEST_MESH_H
 
 #include "afm_test_harness.h"
+#include "afm_split_segments.h"
 #include "afm_validity_checker.h"
 
 #include <CGAL/Advancing_front_mesher_2.h>
@@ -87,25 +88,6 @@ std::list<typename CDT::Point> seeds_of(const Poly_data& in)
   return seeds;
 }
 
-// Mesh_2 splits encroached input segments: its meshes are checked against
-// the segments as split, the triangulation's constrained edges.
-template <class CDT>
-afm_check::Pslg refined_pslg(const CDT& cdt, const Poly_data& in)
-{
-  afm_check::Pslg p;
-  std::map<typename CDT::Vertex_handle, std::size_t> id;
-  auto index = [&](typename CDT::Vertex_handle v) {
-    auto it = id.find(v);
-    if(it != id.end()) return it->second;
-    p.points.push_back({{CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}});
-    return id[v] = p.points.size() - 1;
-  };
-  for(const auto& e : cdt.constrained_edges())
-    p.segments.push_back({{index(e.first->vertex(CDT::cw(e.second))), index(e.first->vertex(CDT::ccw(e.second)))}});
-  p.holes = in.holes;
-  return p;
-}
-
 inline afm_check::Pslg to_pslg(const Poly_data& in)
 {
   afm_check::Pslg p;
@@ -113,6 +95,14 @@ inline afm_check::Pslg to_pslg(const Poly_data& in)
   p.segments = in.segments;
   p.holes = in.holes;
   return p;
+}
+
+// The independent checker on a mesh of `in` whose segments may be split
+// (the boundary discretisation): each input segment must be covered by a
+// chain of mesh edges through the mesh vertices on it.
+inline afm_check::Report check_split_mesh(const Poly_data& in, const afm_check::Mesh& mesh)
+{
+  return afm_check::check_mesh(afm_check::split_at_mesh_vertices(to_pslg(in), mesh), mesh);
 }
 
 // The in-domain triangles, with vertices numbered in order of appearance.
@@ -149,10 +139,13 @@ struct Result
 // Meshes `in` with the class API and checks everything a mesh must satisfy:
 // the independent checker, CGAL's own validity test, the front invariants
 // (every `check_front_every` steps when non-zero) and that the advancing
-// front built a Delaunay mesh by itself (no repair flip).
+// front built a Delaunay mesh by itself (no repair flip). The segments are
+// kept, as in the paper (the front is tested on coarse boundaries), unless
+// `split_constraints`.
 template <class CDT, class Sizing>
 Result mesh_and_check(const Poly_data& in, const Sizing& sizing, const std::string& label,
-                      std::size_t check_front_every = 0, bool pocket_priority = true)
+                      std::size_t check_front_every = 0, bool pocket_priority = true,
+                      bool split_constraints = false)
 {
   CDT cdt;
   build_cdt(cdt, in);
@@ -160,6 +153,7 @@ Result mesh_and_check(const Poly_data& in, const Sizing& sizing, const std::stri
   Mesher<CDT, Sizing> mesher(cdt, sizing);
   mesher.set_seeds(seeds.begin(), seeds.end());
   mesher.set_pocket_priority(pocket_priority);
+  mesher.set_constraint_splitting(split_constraints);
   const auto start = std::chrono::steady_clock::now();
   if(check_front_every == 0) {
     mesher.refine_mesh();
@@ -176,7 +170,7 @@ Result mesh_and_check(const Poly_data& in, const Sizing& sizing, const std::stri
   r.stats = mesher.statistics();
   AFM_CHECK_MSG(cdt.is_valid(), label << ": CGAL's is_valid() failed");
   r.mesh = extract_mesh(cdt);
-  r.report = afm_check::check_mesh(to_pslg(in), r.mesh);
+  r.report = check_split_mesh(in, r.mesh);
   std::cout << "  " << label << ": " << r.report.summary() << ", " << r.seconds << " s, inserted "
             << r.stats.points_inserted << ", forced " << r.stats.forced_closures << ", largest front "
             << r.stats.largest_front << ", pockets " << r.stats.pockets << "\n";

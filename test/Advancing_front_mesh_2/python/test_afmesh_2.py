@@ -162,6 +162,27 @@ def test_markers_regions_and_meshio():
     assert np.array_equal(back.point_data["marker"], m.vertex_markers)
 
 
+def test_boundary_discretisation():
+    """A unit square by its corners: split to the size by default, kept on request."""
+    path = os.path.join(WORK, "unit_square.poly")
+    with open(path, "w") as f:
+        f.write("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
+    v, s, h, _, _, _ = read_poly(path)
+    m = afmesh_2.mesh(v, s, h, size=0.02)
+    check_valid(path, m, "unit_square")
+    assert 5000 < len(m.triangles) < 6500
+    # 4 sides of 50 pieces: 200 boundary segments
+    assert len(m.segments) == 200
+    kept = afmesh_2.mesh(v, s, h, size=0.02, keep_segments=True)
+    check_valid(path, kept, "unit_square_kept")
+    assert len(kept.triangles) == 4 and len(kept.segments) == 4
+    # the same as the tool writes
+    base = os.path.join(WORK, "unit_square_cli")
+    run(AFMESH, path, "--size", "0.02", "-o", base + ".node")
+    points, triangles = read_node_ele(base)
+    assert np.array_equal(m.points, points) and np.array_equal(m.triangles, triangles)
+
+
 def test_sources_and_kernels(airfoil):
     v, s, h, _, _, _ = read_poly(airfoil)
     sources = np.array([[0.0, 0.0, 0.02], [1.0, 0.0, 0.04]])
@@ -231,7 +252,15 @@ def test_example_channel_with_inclusion():
     assert np.array_equal(m.cell_data_dict["region"]["triangle"], np.where(in_circle, 2.0, 1.0))
     a, b = points[lines[:, 0]], points[lines[:, 1]]
     marker = m.cell_data_dict["marker"]["line"]
+    # the chords of the circle, split or not, lie between the chord's and the
+    # circle's distance from the centre
+    def on_circle(p):
+        r = np.hypot(p[:, 0] - 1, p[:, 1] - 0.5)
+        return (r > 0.2 * np.cos(np.pi / 64) - 1e-9) & (r < 0.2 + 1e-9)
     expected = np.where((a[:, 0] == 0) & (b[:, 0] == 0), 1,
                         np.where((a[:, 0] == 4) & (b[:, 0] == 4), 2,
-                                 np.where(np.abs(np.hypot(a[:, 0] - 1, a[:, 1] - 0.5) - 0.2) < 1e-9, 4, 3)))
+                                 np.where(on_circle(a) & on_circle(b), 4, 3)))
     assert np.array_equal(marker, expected)
+    # the channel, given by its corners, is split to the size: about 0.06 on
+    # the walls far from the inclusion
+    assert np.count_nonzero(marker == 1) >= 15 and np.count_nonzero(marker == 3) >= 2 * 60

@@ -86,7 +86,7 @@ def grid_size(xs, ys, h):
 
 def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=None, segment_markers=None,
          size=None, sources=None, max_size=None, grading=0.2, boundary_spacing="grow", smooth=0,
-         smoother="quality", kernel="epick"):
+         smoother="quality", kernel="epick", keep_segments=False):
     """Meshes the domain bounded by `segments`.
 
     vertices: (n, 2) coordinates; segments: (m, 2) 0-based indices into vertices;
@@ -105,7 +105,9 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
                              with the boundary spacing grown at `grading`
                              (None: not limited) and bounded by max_size;
       nothing                the boundary spacing grown at `grading`.
-    Regions with an area limit bound any of them. smooth=N runs N passes of
+    Regions with an area limit bound any of them. Segments longer than the
+    local size are split to it first, unless keep_segments=True (every
+    segment one mesh edge, as afmesh_2 --keep-segments). smooth=N runs N passes of
     the smoother ('quality' or 'laplacian'); kernel: 'epick', 'epeck' or
     'exact-rational'.
 
@@ -118,4 +120,5 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
             raise ValueError("size: a grid is given as (xs, ys, h)")
         size = grid_size(*size)
     return Mesh(**_mesh(vertices, segments, holes, regions, vertex_markers, segment_markers, size, sources,
-                        max_size, grading, boundary_spacing, smooth, smoother, kernel))
+                        max_size, grading, boundary_spacing, smooth, smoother, kernel,
+                        keep_segments))

@@ -18,16 +18,12 @@ import afmesh_2
 
 out = sys.argv[1] if len(sys.argv) > 1 else "channel.vtu"
 
-# The mesher keeps every input segment as one edge (the paper's boundary
-# discretisation is the user's), so the channel's sides are given in pieces
-# of the size the function below asks for there (0.06), and the circle in 64.
-def side(a, b, pieces):
-    return np.array([np.linspace(a[0], b[0], pieces + 1)[:-1], np.linspace(a[1], b[1], pieces + 1)[:-1]]).T
-
-
-sides = [((0, 0), (4, 0), 67, 3), ((4, 0), (4, 1), 17, 2), ((4, 1), (0, 1), 67, 3), ((0, 1), (0, 0), 17, 1)]
-outer = np.vstack([side(a, b, n) for a, b, n, _ in sides])
-outer_markers = np.concatenate([[marker] * n for _, _, n, marker in sides])
+# The mesher splits input segments longer than the local size to the size
+# (the boundary discretisation), so the channel is given by its four corners;
+# the circle, a curve, by 64 chords. Segment i goes from corner i to corner
+# i + 1: the lower wall, the outlet, the upper wall, the inlet.
+outer = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 1.0]])
+outer_markers = np.array([3, 2, 3, 1])
 angles = np.linspace(0, 2 * np.pi, 64, endpoint=False)
 circle = np.column_stack([1 + 0.2 * np.cos(angles), 0.5 + 0.2 * np.sin(angles)])
 vertices = np.vstack([outer, circle])

@@ -22,6 +22,7 @@
 #include <CGAL/Advancing_front_mesh_2/internal/Front_triangles.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_visibility.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Initial_front.h>
+#include <CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Neighbourhood.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Pockets.h>
@@ -110,6 +111,10 @@ public:
   // ---------------------------------------------------------- settings
   Seeds seeds;
   bool seeds_mark = false;
+  // the boundary discretisation before the front is built (off: the paper's
+  // mode, every input segment one front edge)
+  bool split_constraints = true;
+  Constraint_split_statistics split_statistics;
   std::size_t iteration_limit = 0;
   double time_limit = 0;
   bool pocket_priority() const { return pocket_priority_; }
@@ -216,8 +221,22 @@ void Advancing_front_refiner<Tr, S, V, P, C>::init(On_init on_init)
     finished_ = true;
     return;
   }
-  CGAL::Delaunay_mesher_2<Tr, CGAL::Delaunay_mesh_criteria_2<Tr> >::mark_facets(ctx_.tr, seeds.begin(), seeds.end(),
-                                                                                seeds_mark);
+  typedef CGAL::Delaunay_mesher_2<Tr, CGAL::Delaunay_mesh_criteria_2<Tr> > Mesh_2_mesher;
+  Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
+  split_statistics = Constraint_split_statistics();
+  if(split_constraints) {
+    // the constraints that bound or cross the domain, to the size field;
+    // the faces the splits made are marked again
+    split_statistics = split_constraints_to_size_2(
+      ctx_.tr, size_.sizing_field(),
+      [this](const typename Tr::Edge& e) {
+        const Face_handle f = e.first, g = f->neighbor(e.second);
+        return (!ctx_.tr.is_infinite(f) && f->is_in_domain()) || (!ctx_.tr.is_infinite(g) && g->is_in_domain());
+      },
+      internal::No_split_callback());
+    if(split_statistics.points_inserted > 0)
+      Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
+  }
   ctx_.set_scaling(Coordinate_scaling<Point>::for_triangulation(ctx_.tr));
   finished_ = !initial_front_.build();
   if(stream_.is_streaming() && !finished_) {

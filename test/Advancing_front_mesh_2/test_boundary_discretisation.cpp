@@ -1,0 +1,266 @@
+// The boundary discretisation (split_constraints_to_size_2): where one
+// segment is cut, the unit square given by its four corners meshed at the
+// size asked for through the class, the free function and a Mesh_2
+// criteria object, with every kernel and rotated (rounded cuts), the
+// paper's mode kept on request, markers carried over the splits, a
+// Constrained_triangulation_plus_2, and the robustness catalogue with
+// splitting on. Every mesh goes through the independent checker, which
+// wants each input segment covered by a chain of mesh edges.
+#include "afm_robustness_catalogue.h"
+#include "afm_test_mesh.h"
+
+#include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
+#include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+#include <CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace AFM = CGAL::Advancing_front_mesh_2;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef CGAL::Simple_cartesian<CGAL::Exact_rational> Rational_kernel;
+
+// The unit square by its four corners, turned by `angle` about the origin.
+afm_test::Poly_data unit_square(double angle)
+{
+  afm_test::Poly_data in;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for(const auto& p : {std::array<double, 2>{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}})
+    in.points.push_back({{c * p[0] - s * p[1], s * p[0] + c * p[1]}});
+  in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}};
+  return in;
+}
+
+template <class CDT>
+std::size_t domain_triangles(const CDT& cdt)
+{
+  std::size_t n = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) n += f->is_in_domain() ? 1 : 0;
+  return n;
+}
+
+// The figures the issue asks of the unit square at h = 0.01: about 23,000
+// triangles, at least 97% of edges within [h/sqrt2, h sqrt2], mean radius
+// ratio at least 0.99; valid and constrained Delaunay.
+template <class K, class CDT>
+void check_unit_square_mesh(const CDT& cdt, const afm_test::Poly_data& in, const std::string& label)
+{
+  AFM_CHECK_MSG(cdt.is_valid(), label << ": CGAL's is_valid() failed");
+  const afm_check::Mesh mesh = afm_test::extract_mesh(cdt);
+  const afm_check::Report report = afm_test::check_split_mesh(in, mesh);
+  const AFM::Mesh_quality q =
+    AFM::mesh_quality(cdt, [](const typename K::Point_2&) { return typename K::FT(0.01); });
+  std::cout << "  " << label << ": " << report.summary() << "; " << 100 * q.share_edges_within_sqrt2
+            << "% of edges within [h/sqrt2, h sqrt2]\n";
+  AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
+  const std::size_t n = domain_triangles(cdt);
+  AFM_CHECK_MSG(n > 21000 && n < 25000, label << ": " << n << " triangles, expected about 23,000");
+  AFM_CHECK_MSG(q.share_edges_within_sqrt2 >= 0.97, label << ": " << q.share_edges_within_sqrt2);
+  AFM_CHECK_MSG(q.mean_radius_ratio >= 0.99, label << ": mean radius ratio " << q.mean_radius_ratio);
+}
+
+template <class K>
+void mesh_unit_square_with_the_class(double angle, const std::string& label)
+{
+  typedef typename afm_test::Types<K>::CDT CDT;
+  const afm_test::Poly_data in = unit_square(angle);
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  afm_test::Mesher<CDT> mesher(cdt, afm_test::uniform<K>(0.01));
+  AFM_CHECK(mesher.constraint_splitting()); // the default
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  const AFM::Constraint_split_statistics& st = mesher.constraint_split_statistics();
+  std::cout << "  " << label << ": " << st.edges_split << " edges split at " << st.points_inserted << " points, "
+            << st.points_rounded << " rounded, " << st.points_skipped << " left out\n";
+  AFM_CHECK_MSG(st.edges_split == 4 && st.points_inserted == 396 && st.points_skipped == 0,
+                label << ": " << st.edges_split << " " << st.points_inserted << " " << st.points_skipped);
+  // axis-parallel sides are cut exactly; turned ones mostly not
+  AFM_CHECK_MSG((angle == 0) == (st.points_rounded == 0), label << ": " << st.points_rounded << " rounded");
+  check_unit_square_mesh<K>(cdt, in, label);
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_boundary_segment_cut_parameters)
+{
+  using AFM::internal::segment_cut_parameters;
+  // uniform: round(L / h) equal pieces
+  std::vector<double> cuts = segment_cut_parameters(1., [](double) { return 0.1; });
+  AFM_CHECK_MSG(cuts.size() == 9, cuts.size());
+  for(std::size_t k = 0; k < cuts.size(); ++k) AFM_CHECK_MSG(std::abs(cuts[k] - (k + 1) / 10.) < 1e-12, cuts[k]);
+  // shorter than 1.5 h: whole; from 1.5 h: two pieces
+  AFM_CHECK(segment_cut_parameters(1.49, [](double) { return 1.; }).empty());
+  cuts = segment_cut_parameters(1.5, [](double) { return 1.; });
+  AFM_CHECK(cuts.size() == 1 && std::abs(cuts[0] - 0.5) < 1e-12);
+  // graded, h from 0.02 to 0.22: pieces grow along the segment, each as
+  // long as the size at its middle to within the gradation over one piece
+  const auto h = [](double t) { return 0.02 + 0.2 * t; };
+  cuts = segment_cut_parameters(1., h);
+  // the integral of dt / h is ln(0.22 / 0.02) / 0.2 = 11.99
+  AFM_CHECK_MSG(cuts.size() == 11, cuts.size());
+  double previous = 0, previous_piece = 0;
+  for(std::size_t k = 0; k <= cuts.size(); ++k) {
+    const double end = k < cuts.size() ? cuts[k] : 1., piece = end - previous;
+    AFM_CHECK_MSG(piece > previous_piece, "piece " << k << " is not longer than the one before");
+    const double ratio = piece / h(0.5 * (previous + end));
+    AFM_CHECK_MSG(ratio > 0.97 && ratio < 1.03, "piece " << k << ": length / h " << ratio);
+    previous = end;
+    previous_piece = piece;
+  }
+  // a size that is not a positive finite number is refused
+  bool threw = false;
+  try {
+    segment_cut_parameters(1., [](double t) { return t < 0.5 ? 0.1 : -1.; });
+  } catch(const std::invalid_argument&) {
+    threw = true;
+  }
+  AFM_CHECK(threw);
+}
+
+AFM_TEST_CASE(test_boundary_unit_square_at_the_size_asked)
+{
+  mesh_unit_square_with_the_class<Epick>(0, "Epick");
+  mesh_unit_square_with_the_class<Epick>(0.3, "Epick, turned by 0.3");
+  mesh_unit_square_with_the_class<Epeck>(0.3, "Epeck, turned by 0.3");
+  mesh_unit_square_with_the_class<Rational_kernel>(0, "Simple_cartesian<Exact_rational>");
+}
+
+// The same through the free function with a Mesh_2 criteria object (size
+// bound S = h / 0.7, the package's mapping), and the paper's mode with
+// protect_constraints(true): four triangles, as before.
+AFM_TEST_CASE(test_boundary_unit_square_through_mesh_2_criteria)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  const afm_test::Poly_data in = unit_square(0);
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  const CGAL::Delaunay_mesh_size_criteria_2<CDT> criteria(0.125, 0.01 / 0.7);
+  AFM_CHECK(CGAL::advancing_front_mesh_2(cdt, criteria) == AFM::MESH_COMPLETE);
+  check_unit_square_mesh<Epick>(cdt, in, "Delaunay_mesh_size_criteria_2(0.125, 0.01 / 0.7)");
+
+  CDT kept;
+  afm_test::build_cdt(kept, in);
+  AFM_CHECK(CGAL::advancing_front_mesh_2(kept, criteria, CGAL::parameters::protect_constraints(true)) ==
+            AFM::MESH_COMPLETE);
+  AFM_CHECK_MSG(domain_triangles(kept) == 4, domain_triangles(kept));
+  AFM_CHECK(afm_check::check_mesh(afm_test::to_pslg(in), afm_test::extract_mesh(kept)).ok);
+}
+
+// Cuts of axis-parallel segments are exact: every boundary vertex lies
+// exactly on its side (the kernel's exact predicate).
+AFM_TEST_CASE(test_boundary_cuts_lie_on_their_segments)
+{
+  typedef afm_test::Types<Epeck>::CDT CDT;
+  CDT cdt;
+  afm_test::build_cdt(cdt, unit_square(0));
+  const AFM::Constraint_split_statistics st = AFM::split_constraints_to_size_2(cdt, afm_test::uniform<Epeck>(0.05));
+  AFM_CHECK_MSG(st.points_inserted == 4 * 19 && st.points_rounded == 0, st.points_inserted);
+  std::size_t on_sides = 0;
+  for(const auto& e : cdt.constrained_edges()) {
+    for(int k : {CDT::cw(e.second), CDT::ccw(e.second)}) {
+      const auto& p = e.first->vertex(k)->point();
+      const bool on_a_side = p.x() == 0 || p.x() == 1 || p.y() == 0 || p.y() == 1;
+      AFM_CHECK_MSG(on_a_side, "vertex " << p << " of a constrained edge is off the square's sides");
+      ++on_sides;
+    }
+  }
+  AFM_CHECK_MSG(on_sides == 2 * 80, on_sides);
+  AFM_CHECK(cdt.is_valid());
+}
+
+// Markers carried over the splits: each piece of a side keeps the side's
+// marker, and the new vertices get it by Triangle's rules.
+AFM_TEST_CASE(test_boundary_markers_follow_the_splits)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  CDT cdt;
+  const afm_test::Poly_data in = unit_square(0);
+  std::vector<CDT::Vertex_handle> v;
+  for(const auto& p : in.points) v.push_back(cdt.insert(Epick::Point_2(p[0], p[1])));
+  AFM::Markers_and_regions_2<CDT> tags;
+  for(int k = 0; k < 4; ++k) {
+    cdt.insert_constraint(v[k], v[(k + 1) % 4]);
+    tags.set_constraint_marker(v[k], v[(k + 1) % 4], 5 + k);
+  }
+  const AFM::Constraint_split_statistics st = AFM::split_constraints_to_size_2(
+    cdt, afm_test::uniform<Epick>(0.1), AFM::internal::Every_constrained_edge(),
+    [&](CDT::Vertex_handle a, CDT::Vertex_handle b, CDT::Vertex_handle c) { tags.split_constraint(a, b, c); });
+  AFM_CHECK(st.points_inserted == 36);
+  afm_test::Mesher<CDT> mesher(cdt, afm_test::uniform<Epick>(0.1));
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  // the side of an edge on the square's boundary: 0 bottom, 1 right, 2 top, 3 left
+  auto side = [](const Epick::Point_2& a, const Epick::Point_2& b) {
+    if(a.y() == 0 && b.y() == 0) return 0;
+    if(a.x() == 1 && b.x() == 1) return 1;
+    if(a.y() == 1 && b.y() == 1) return 2;
+    return 3;
+  };
+  std::size_t edges = 0;
+  for(const auto& e : cdt.constrained_edges()) {
+    const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
+    const auto& b = e.first->vertex(CDT::cw(e.second))->point();
+    AFM_CHECK_MSG(tags.edge_marker(cdt, e.first, e.second) == 5 + side(a, b), a << " " << b);
+    ++edges;
+  }
+  AFM_CHECK_MSG(edges == 40, edges);
+  for(auto vit = cdt.finite_vertices_begin(); vit != cdt.finite_vertices_end(); ++vit) {
+    const auto& p = vit->point();
+    const bool corner = (p.x() == 0 || p.x() == 1) && (p.y() == 0 || p.y() == 1);
+    const bool on_side = p.x() == 0 || p.x() == 1 || p.y() == 0 || p.y() == 1;
+    if(!on_side || corner) continue;
+    const int expected = p.y() == 0 ? 5 : p.x() == 1 ? 6 : p.y() == 1 ? 7 : 8;
+    AFM_CHECK_MSG(tags.vertex_marker(cdt, vit) == expected, p << ": " << tags.vertex_marker(cdt, vit));
+  }
+}
+
+// A Constrained_triangulation_plus_2 keeps its constraint hierarchy: cuts
+// go through the triangulation's own insertion; a rounded cut on the hull
+// that cannot be moved onto its edge is left out, and the mesh is valid.
+AFM_TEST_CASE(test_boundary_constrained_triangulation_plus)
+{
+  typedef afm_test::Types<Epick>::CDT_plus CDT_plus;
+  for(double angle : {0., 0.3}) {
+    const afm_test::Poly_data in = unit_square(angle);
+    CDT_plus cdt;
+    afm_test::build_cdt(cdt, in);
+    afm_test::Mesher<CDT_plus> mesher(cdt, afm_test::uniform<Epick>(0.02));
+    AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+    const AFM::Constraint_split_statistics& st = mesher.constraint_split_statistics();
+    AFM_CHECK(cdt.is_valid());
+    const afm_check::Report report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
+    std::cout << "  turned by " << angle << ": " << st.points_inserted << " cuts, " << st.points_skipped
+              << " left out; " << report.summary() << "\n";
+    AFM_CHECK_MSG(report.ok, report.summary());
+    AFM_CHECK(st.points_inserted + st.points_skipped == 4 * 49);
+    AFM_CHECK(cdt.number_of_constraints() == 4);
+    if(angle == 0) AFM_CHECK(st.points_skipped == 0);
+  }
+}
+
+// The robustness catalogue (slits, huge and tiny scales, offsets,
+// near-degenerate points) with the boundary split to each case's size.
+AFM_TEST_CASE(test_boundary_catalogue_split_epick)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  for(const afm_robustness::Case& c : afm_robustness::catalogue())
+    afm_test::mesh_and_check<CDT>(c.in, afm_robustness::Case_size<Epick>(c), "Epick, split: " + c.name, 0, true,
+                                  true);
+}
+
+AFM_TEST_CASE(test_boundary_catalogue_split_epeck)
+{
+  typedef afm_test::Types<Epeck>::CDT CDT;
+  for(const afm_robustness::Case& c : afm_robustness::catalogue())
+    afm_test::mesh_and_check<CDT>(c.in, afm_robustness::Case_size<Epeck>(c), "Epeck, split: " + c.name, 0, true,
+                                  true);
+}
