@@ -202,9 +202,10 @@ void split_constrained_edge(CDT& cdt, typename CDT::Vertex_handle from, typename
       // the rounding, or into the hull): moved across the edge by a few
       // units in the last place, onto it or just beyond.
       const Point moved = nudged_across(p, q, b, side, orientation);
-      v = insert_cut(cdt, f, i, prev, to, moved, orientation(q, b, moved));
       // on the hull, the point moved out of it makes no sliver behind it
+      // (asked before the faces at the edge may change)
       const bool on_hull = cdt.is_infinite(f) || cdt.is_infinite(f->neighbor(i));
+      v = insert_cut(cdt, f, i, prev, to, moved, orientation(q, b, moved));
       if(v == Vertex_handle())
         v = split_by_reinsertion(cdt, prev, to, on_hull ? moved : p,
                                  std::integral_constant<bool, Has_constraint_hierarchy<CDT>::value>());
