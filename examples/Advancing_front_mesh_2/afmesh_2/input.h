@@ -220,15 +220,6 @@ void make_size_field(const Options& opt, Input<K>& in)
   make_size_field(opt, in, read_sources<K>(opt));
 }
 
-// Whether a constrained edge bounds or crosses the domain (the others are
-// not meshed, so neither split nor counted).
-template <class CDT>
-bool touches_domain(const CDT& cdt, const typename CDT::Edge& e)
-{
-  const auto f = e.first, g = f->neighbor(e.second);
-  return (!cdt.is_infinite(f) && f->is_in_domain()) || (!cdt.is_infinite(g) && g->is_in_domain());
-}
-
 // The boundary discretisation: the segments split to the size field, their
 // markers carried over; with --keep-segments only a count, and a note when
 // segments much longer than the local size stay whole.
@@ -236,7 +227,7 @@ template <class K>
 void split_boundary(const Options& opt, Input<K>& in)
 {
   typedef typename Types<K>::CDT CDT;
-  const auto in_domain = [&](const typename CDT::Edge& e) { return touches_domain(in.cdt, e); };
+  const AFM::Constraint_touches_domain<CDT> in_domain{&in.cdt};
   if(!opt.keep_segments) {
     in.split = AFM::split_constraints_to_size_2(
       in.cdt, in.sizing, in_domain,

@@ -240,6 +240,24 @@ struct Every_constrained_edge
 /*!
 \ingroup PkgAdvancingFrontMesh2Ref
 
+The edge filter of `split_constraints_to_size_2()` that the mesher uses:
+the constrained edges with a face of the domain (Mesh_2's in-domain mark)
+on at least one side, the ones that bound or cross the domain.
+*/
+template <class CDT>
+struct Constraint_touches_domain
+{
+  const CDT* cdt;
+  bool operator()(const typename CDT::Edge& e) const
+  {
+    const typename CDT::Face_handle f = e.first, g = f->neighbor(e.second);
+    return (!cdt->is_infinite(f) && f->is_in_domain()) || (!cdt->is_infinite(g) && g->is_in_domain());
+  }
+};
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
 The boundary discretisation (the "1D mesh" of Triangle, Mesh_2, Gmsh and
 JIGSAW): splits the constrained edges of `cdt` that are longer than the
 local size into pieces that follow the sizing field, keeping every vertex.

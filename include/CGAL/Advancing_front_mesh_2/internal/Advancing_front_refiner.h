@@ -227,13 +227,9 @@ void Advancing_front_refiner<Tr, S, V, P, C>::init(On_init on_init)
   if(split_constraints) {
     // the constraints that bound or cross the domain, to the size field;
     // the faces the splits made are marked again
-    split_statistics = split_constraints_to_size_2(
-      ctx_.tr, size_.sizing_field(),
-      [this](const typename Tr::Edge& e) {
-        const Face_handle f = e.first, g = f->neighbor(e.second);
-        return (!ctx_.tr.is_infinite(f) && f->is_in_domain()) || (!ctx_.tr.is_infinite(g) && g->is_in_domain());
-      },
-      internal::No_split_callback());
+    split_statistics = split_constraints_to_size_2(ctx_.tr, size_.sizing_field(),
+                                                   Constraint_touches_domain<Tr>{&ctx_.tr},
+                                                   internal::No_split_callback());
     if(split_statistics.points_inserted > 0)
       Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
   }
