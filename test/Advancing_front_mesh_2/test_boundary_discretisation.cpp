@@ -19,6 +19,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -264,3 +265,75 @@ AFM_TEST_CASE(test_boundary_catalogue_split_epeck)
     afm_test::mesh_and_check<CDT>(c.in, afm_robustness::Case_size<Epeck>(c), "Epeck, split: " + c.name, 0, true,
                                   true);
 }
+
+// Two input segments from one point that run within a unit in the last
+// place of each other (a fuzzer's find): a rounded cut of one could lie on
+// either, so the splitting leaves out the cuts that would not keep clear of
+// the other segment by more than their rounding; the mesh is valid and the
+// checker can tell the chains apart.
+AFM_TEST_CASE(test_boundary_near_coincident_segments)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  // on a grid of 2^-16 millionths offset to 1 (exact doubles)
+  auto c = [](int v) { return 1 + 1e-6 * (double(v) / 65536); };
+  afm_test::Poly_data in;
+  for(const auto& g : {std::array<int, 4>{{2, 1280, 0, 10496}}, {{3, 65280, 3, 65283}}, {{255, 5895, 1792, 16128}}}) {
+    in.points.push_back({{c(g[0]), c(g[1])}});
+    in.points.push_back({{c(g[2]), c(g[3])}});
+  }
+  in.segments = {{{3, 0}}, {{2, 0}}, {{4, 3}}, {{4, 0}}};
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  afm_test::Mesher<CDT> mesher(cdt, afm_test::uniform<Epick>(2.5e-8));
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  const AFM::Constraint_split_statistics& st = mesher.constraint_split_statistics();
+  AFM_CHECK(cdt.is_valid());
+  const afm_check::Report report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
+  std::cout << "  " << st.points_inserted << " cuts (" << st.points_rounded << " rounded), " << st.points_skipped
+            << " left out; " << report.summary() << "\n";
+  AFM_CHECK_MSG(report.ok, report.summary());
+  AFM_CHECK_MSG(st.points_skipped > 0, "no cut was left out between segments an ulp apart");
+  // no vertex that is not an input point lies within the checker's 16 units
+  // in the last place of two input segments
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    std::size_t near = 0;
+    for(const auto& s : in.segments) {
+      const Epick::Point_2 a(in.points[s[0]][0], in.points[s[0]][1]), b(in.points[s[1]][0], in.points[s[1]][1]);
+      if(v->point() == a || v->point() == b) {
+        near = 0;
+        break;
+      }
+      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(v->point(), Epick::Segment_2(a, b))));
+      near += d <= 16 * std::numeric_limits<double>::epsilon() * 1.000001 ? 1 : 0;
+    }
+    AFM_CHECK_MSG(near <= 1, "vertex " << v->point() << " lies within rounding of " << near << " input segments");
+  }
+}
+
+// An input point exactly on a segment that bounds only a hole: the
+// triangulation splits the segment there, the point is not a mesh vertex,
+// and the checker (which splits input segments at input points on them)
+// accepts the mesh, with segments split or kept.
+AFM_TEST_CASE(test_boundary_input_point_on_a_hole_segment)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  afm_test::Poly_data in;
+  for(const auto& p : {std::array<double, 2>{{0, 0}}, {{63, 0}}, {{63, 63}}, {{0, 63}}, {{20, 0}}, {{0, 20}}, {{40, 63}},
+                       {{20, 40}}})
+    in.points.push_back({{p[0] / 64, p[1] / 64}});
+  in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}, {{4, 5}}};
+  in.holes = {{{59. / 64, 17. / 64}}, {{20. / 64, 20. / 64}}};
+  for(bool split : {true, false}) {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    afm_test::Mesher<CDT> mesher(cdt, afm_test::uniform<Epick>(0.0603));
+    const auto seeds = afm_test::seeds_of<CDT>(in);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.set_constraint_splitting(split);
+    AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+    const afm_check::Report report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
+    std::cout << "  " << (split ? "split" : "kept") << ": " << report.summary() << "\n";
+    AFM_CHECK_MSG(report.ok, report.summary());
+  }
+}
+

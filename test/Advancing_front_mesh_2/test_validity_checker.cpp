@@ -12,7 +12,11 @@
 // it is meant to catch is planted once and must be reported with its kind.
 
 #include "afm_test_harness.h"
+#include "afm_split_segments.h"
 #include "afm_validity_checker.h"
+
+#include <cmath>
+#include <limits>
 
 #include <string>
 
@@ -359,5 +363,84 @@ AFM_TEST_CASE(test_checker_crossing_input_reported)
 AFM_TEST_CASE(test_checker_empty_input_and_mesh_accepted)
 {
   const Report r = afm_check::check_mesh(Pslg(), Mesh());
+  AFM_CHECK_MSG(r.ok, explain(r));
+}
+
+// afm_split_segments.h: the input of meshers that split segments, cut at
+// the mesh vertices found on each segment.
+namespace {
+// the unit square with its bottom side split at (x, y)
+Mesh square_split_at(double x, double y)
+{
+  Mesh m;
+  m.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {x, y}};
+  m.triangles = {{0, 4, 3}, {4, 1, 2}, {4, 2, 3}};
+  return m;
+}
+} // namespace
+
+AFM_TEST_CASE(test_checker_split_segment_accepted_as_a_chain)
+{
+  const Mesh m = square_split_at(0.5, 0);
+  const Report r = afm_check::check_mesh(afm_check::split_at_mesh_vertices(unit_square(), m), m);
+  AFM_CHECK_MSG(r.ok, explain(r));
+}
+
+// A cut rounded a few units in the last place off its segment is on it; one
+// a thousand units off is not, and the mesh boundary then has edges that
+// are no input segment.
+AFM_TEST_CASE(test_checker_rounded_cut_within_tolerance)
+{
+  const double ulp = std::numeric_limits<double>::epsilon();
+  for(double off : {-3 * ulp, 3 * ulp, -1000 * ulp}) {
+    const Mesh m = square_split_at(0.5, off);
+    const Report r = afm_check::check_mesh(afm_check::split_at_mesh_vertices(unit_square(), m), m);
+    if(off > -100 * ulp)
+      AFM_CHECK_MSG(r.ok, off << ": " << explain(r));
+    else
+      AFM_CHECK_MSG(!r.ok && r.count(kind::boundary_edge) > 0, off << ": " << explain(r));
+  }
+}
+
+// A segment given twice, the second time the other way round: both copies
+// get the chain (a fuzzer's find: the copy left whole overlapped the
+// chain).
+AFM_TEST_CASE(test_checker_duplicate_segment_split_once)
+{
+  Pslg in = unit_square();
+  in.segments.push_back({1, 0});
+  const Mesh m = square_split_at(0.5, 0);
+  const Report r = afm_check::check_mesh(afm_check::split_at_mesh_vertices(in, m), m);
+  AFM_CHECK_MSG(r.ok, explain(r));
+}
+
+// An input point exactly on a segment cuts it whether or not it is a mesh
+// vertex: on the domain's boundary it must be one.
+AFM_TEST_CASE(test_checker_input_point_on_a_segment)
+{
+  Pslg in = unit_square();
+  in.points.push_back({0.5, 0});
+  const Mesh split = square_split_at(0.5, 0);
+  Report r = afm_check::check_mesh(afm_check::split_at_mesh_vertices(in, split), split);
+  AFM_CHECK_MSG(r.ok, explain(r));
+  const Mesh whole = unit_square_mesh();
+  r = afm_check::check_mesh(afm_check::split_at_mesh_vertices(in, whole), whole);
+  AFM_CHECK_MSG(!r.ok && r.count(kind::missing_input_point) == 1, explain(r));
+}
+
+// A vertex within rounding of two segments belongs to the nearer one.
+AFM_TEST_CASE(test_checker_cut_belongs_to_the_nearer_segment)
+{
+  // the square's base split at (0.25, 0), and an inner segment from (0, 0)
+  // to (1, 1e-15) that the cut is also within 16 units in the last place of
+  Pslg in = unit_square();
+  in.points.push_back({1, 1e-15});
+  in.segments.push_back({0, 4});
+  Mesh m;
+  m.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1, 1e-15}, {0.25, 0}};
+  // the base's chain 0-5-1, the inner segment 0-4 (whole), the sliver
+  // between them, and the rest of the square
+  m.triangles = {{0, 5, 4}, {5, 1, 4}, {0, 4, 3}, {4, 2, 3}};
+  const Report r = afm_check::check_mesh(afm_check::split_at_mesh_vertices(in, m), m);
   AFM_CHECK_MSG(r.ok, explain(r));
 }
