@@ -19,11 +19,7 @@ cmake --build build-release -j2 --target afmesh_2 afm_make_input > /dev/null
 bin=build-release/examples/Advancing_front_mesh_2
 work=build-release/hard_inputs
 mkdir -p "$work"
-triangle=""
-if [ -f ../shared/tools/triangle/triangle.cpp ]; then
-  g++ -O3 -w -DLINUX -DANSI_DECLARATORS -o "$work/triangle" ../shared/tools/triangle/triangle.cpp -lm
-  triangle="$work/triangle"
-fi
+triangle=$(bash scripts/build_triangle.sh "$work")
 
 out=doc/Advancing_front_mesh_2/benchmark/hard_inputs_results.md
 mkdir -p "$(dirname "$out")"

@@ -17,6 +17,7 @@
 #include <CGAL/Advancing_front_mesh_2/Default_visitor.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_return_code.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
+#include <CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h>
 #include <CGAL/Advancing_front_mesh_2/Sizing_fields.h>
 #include <CGAL/Advancing_front_mesh_2/Statistics.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Advancing_front_refiner.h>
@@ -410,7 +411,12 @@ Meshes the domain of `cdt` (seeds as in `refine_Delaunay_mesh_2()`: with
   field callable as `FT(const Point_2&)` returning `h` at a point (a lambda,
   Mesh_2's `Lipschitz_sizing_field_2`, ...), or a Mesh_2 size criteria object
   such as `Delaunay_mesh_size_criteria_2` (see
-  `Advancing_front_mesh_2::Size_criteria_sizing_field_2` for the mapping)
+  `Advancing_front_mesh_2::Size_criteria_sizing_field_2` for the mapping);
+  a criteria object's shape bound `B` (the squared sine of the smallest
+  angle; 0.125, 20.7 degrees, by default) is kept too: after the frontal
+  pass, `Advancing_front_mesh_2::refine_to_minimum_angle_2()` raises the
+  smallest angle to it (at most 30 degrees; none for `B == 0`), so a Mesh_2
+  user who switches keeps Mesh_2's guarantee
 \param mark the meaning of the seeds
 \param np optional named parameters among:
 \cgalNamedParamsBegin
@@ -457,8 +463,14 @@ advancing_front_mesh_2(CDT& cdt, InputIterator seeds_begin, InputIterator seeds_
   mesher.set_seeds(seeds_begin, seeds_end, mark);
   mesher.set_iteration_limit(choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(0)));
   mesher.set_time_limit(choose_parameter(get_parameter(np, internal_np::maximum_running_time), 0.));
-  mesher.set_constraint_splitting(!choose_parameter(get_parameter(np, internal_np::protect_constraints), false));
-  return mesher.refine_mesh();
+  const bool split = !choose_parameter(get_parameter(np, internal_np::protect_constraints), false);
+  mesher.set_constraint_splitting(split);
+  const Advancing_front_mesh_2::Mesh_return_code code = mesher.refine_mesh();
+  // a Mesh_2 criteria object's shape bound: Mesh_2's guarantee, kept
+  const double angle = Maker::minimum_angle(size);
+  if(code == Advancing_front_mesh_2::MESH_COMPLETE && angle > 0)
+    Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, angle, split);
+  return code;
 }
 
 /*!

@@ -457,4 +457,40 @@ if(NOT kept_triangles EQUAL 4 OR NOT kept_long EQUAL 4
 endif()
 expect_exit(0 ${CHECK} ${WORK_DIR}/unit.poly ${WORK_DIR}/unit_kept.off)
 
+# --min-angle 30: a wedge with a 16.7 degree corner, its sides marked 5.
+# The refinement runs (triangles below 30 before it), leaves at most the
+# corner's triangles below, splits sides at midpoints that keep the marker
+# (every boundary edge of the .edge file is marked 5, none gets Triangle's
+# default 1), and the mesh is valid; bad bounds and --stream are refused.
+file(WRITE ${WORK_DIR}/wedge.poly "3 2 0 0\n1 0 0\n2 1 0\n3 1 0.3\n3 1\n1 1 2 5\n2 2 3 5\n3 3 1 5\n0\n")
+expect_exit(0 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 -o ${WORK_DIR}/wedge_plain.node)
+file(STRINGS ${WORK_DIR}/wedge_plain.edge wedge_plain_marked REGEX " 5$")
+list(LENGTH wedge_plain_marked wedge_plain_count)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 30 -o ${WORK_DIR}/wedge.off
+            -o ${WORK_DIR}/wedge.node --stats)
+string(JSON wedge_before GET "${LAST_OUT}" min_angle below_before)
+string(JSON wedge_after GET "${LAST_OUT}" min_angle below_after)
+string(JSON wedge_changed GET "${LAST_OUT}" min_angle triangles_changed)
+string(JSON wedge_done GET "${LAST_OUT}" min_angle completed)
+string(JSON wedge_triangles GET "${LAST_OUT}" triangles)
+if(wedge_before LESS 1 OR wedge_after GREATER 2 OR wedge_changed LESS 1 OR NOT wedge_done)
+  message(FATAL_ERROR "--min-angle 30 on the wedge: ${LAST_OUT}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/wedge.poly ${WORK_DIR}/wedge.off)
+file(READ ${WORK_DIR}/wedge.off wedge_off LIMIT 64)
+if(NOT wedge_off MATCHES "^OFF\n[0-9]+ ${wedge_triangles} 0")
+  message(FATAL_ERROR "--min-angle: the .off file does not hold the ${wedge_triangles} triangles reported")
+endif()
+file(STRINGS ${WORK_DIR}/wedge.edge wedge_marked REGEX " 5$")
+file(STRINGS ${WORK_DIR}/wedge.edge wedge_default REGEX "^ *[0-9]+ +[0-9]+ +[0-9]+ +1$")
+list(LENGTH wedge_marked wedge_count)
+if(NOT wedge_count GREATER wedge_plain_count OR wedge_default)
+  message(FATAL_ERROR "--min-angle: ${wedge_count} edges marked 5 (${wedge_plain_count} without it); "
+                      "unmarked: ${wedge_default}")
+endif()
+expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 0 -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 31 -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle nan -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 30 --stream -o ${WORK_DIR}/x.off)
+
 message(STATUS "afmesh_2 command-line interface: all checks passed")

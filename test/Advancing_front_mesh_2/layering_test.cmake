@@ -33,6 +33,7 @@ set(AFM_LAYERS
   "0 CGAL/Advancing_front_mesh_2/internal/Tree_storage.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Segment_size_division.h"
   "0 CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h"
+  "0 CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h"
   # L1: the search structures (models of the two concepts)
   "1 CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h"
   "1 CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h"

@@ -6,19 +6,24 @@
 // Constrained_triangulation_plus_2, and the robustness catalogue with
 // splitting on. Every mesh goes through the independent checker, which
 // wants each input segment covered by a chain of mesh edges.
+#include "afm_random_pslg.h"
 #include "afm_robustness_catalogue.h"
 #include "afm_test_mesh.h"
 
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
+#include <CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h>
 #include <CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h>
+#include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -337,3 +342,207 @@ AFM_TEST_CASE(test_boundary_input_point_on_a_hole_segment)
   }
 }
 
+// The minimum angle bound (refine_to_minimum_angle_2, afmesh_2 --min-angle):
+// after the frontal pass, Mesh_2's refinement of the triangles below the
+// bound. The exceptions are computed here from the input alone: triangles
+// with a vertex within two local sizes of an input vertex where two input
+// segments meet at less than 60 degrees.
+namespace {
+
+typedef std::array<double, 2> Xy;
+
+// The angle at o of the triangle o u w in degrees, by the law of cosines
+// on the sides scaled by the longest (no overflow near 1e300, no underflow
+// near 1e-300); written apart from the library's atan2 on purpose.
+double angle_at(const Xy& o, const Xy& u, const Xy& w)
+{
+  const double scale = (std::max)({std::abs(u[0] - o[0]), std::abs(u[1] - o[1]), std::abs(w[0] - o[0]),
+                                   std::abs(w[1] - o[1]), std::abs(w[0] - u[0]), std::abs(w[1] - u[1])});
+  if(!(scale > 0)) return 0;
+  const long double a = std::hypot((u[0] - o[0]) / scale, (u[1] - o[1]) / scale);
+  const long double b = std::hypot((w[0] - o[0]) / scale, (w[1] - o[1]) / scale);
+  const long double c = std::hypot((w[0] - u[0]) / scale, (w[1] - u[1]) / scale);
+  if(!(a > 0) || !(b > 0)) return 0;
+  const long double cosine = (std::min)(1.0L, (std::max)(-1.0L, (a * a + b * b - c * c) / (2 * a * b)));
+  return double(std::acos(cosine) * 180 / 3.14159265358979323846L);
+}
+
+std::vector<Xy> small_input_angle_apexes(const afm_test::Poly_data& in)
+{
+  std::map<Xy, std::vector<Xy> > neighbours;
+  for(const auto& s : in.segments) {
+    neighbours[in.points[s[0]]].push_back(in.points[s[1]]);
+    neighbours[in.points[s[1]]].push_back(in.points[s[0]]);
+  }
+  std::vector<Xy> apexes;
+  for(const auto& vn : neighbours) {
+    const Xy& o = vn.first;
+    bool small = false;
+    for(std::size_t i = 0; i < vn.second.size(); ++i)
+      for(std::size_t j = i + 1; j < vn.second.size(); ++j)
+        small = small || angle_at(o, vn.second[i], vn.second[j]) < 60;
+    if(small) apexes.push_back(o);
+  }
+  return apexes;
+}
+
+template <class K, class CDT, class Size>
+void check_minimum_angle(const CDT& cdt, const afm_test::Poly_data& in, const Size& size, double bound,
+                         const AFM::Minimum_angle_statistics& st, bool split, const std::string& label)
+{
+  AFM_CHECK_MSG(cdt.is_valid(), label);
+  const afm_check::Mesh mesh = afm_test::extract_mesh(cdt);
+  const afm_check::Report report =
+    split ? afm_test::check_split_mesh(in, mesh) : afm_check::check_mesh(afm_test::to_pslg(in), mesh);
+  AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
+  AFM_CHECK_MSG(st.completed, label << ": the refinement stopped at its limit");
+  const std::vector<Xy> apexes = small_input_angle_apexes(in);
+  std::size_t below = 0;
+  for(const auto& t : mesh.triangles) {
+    double smallest = 180;
+    for(int i = 0; i < 3; ++i) {
+      smallest = (std::min)(smallest, angle_at(mesh.vertices[t[i]], mesh.vertices[t[(i + 1) % 3]],
+                                               mesh.vertices[t[(i + 2) % 3]]));
+    }
+    if(!(smallest < bound * (1 - 1e-9))) continue;
+    ++below;
+    if(!split) continue; // kept segments may force more (see the manual)
+    bool excused = false;
+    for(const Xy& a : apexes) {
+      const double h = CGAL::to_double(size(typename K::Point_2(a[0], a[1])));
+      for(int i = 0; i < 3 && !excused; ++i)
+        excused = std::hypot(mesh.vertices[t[i]][0] - a[0], mesh.vertices[t[i]][1] - a[1]) <= 2 * h;
+      if(excused) break;
+    }
+    AFM_CHECK_MSG(excused, label << ": a triangle with a " << smallest << " degree angle at ("
+                                 << mesh.vertices[t[0]][0] << ", " << mesh.vertices[t[0]][1]
+                                 << ") is not near a small input angle");
+  }
+  AFM_CHECK_MSG(below == st.below_after, label << ": " << below << " below, reported " << st.below_after);
+  AFM_CHECK(st.triangles_after == mesh.triangles.size());
+  AFM_CHECK(st.triangles_changed <= st.triangles_after);
+}
+
+// A catalogue case meshed by the frontal pass, segments split or kept.
+template <class CDT>
+void mesh_case(CDT& cdt, const afm_robustness::Case& c, bool split)
+{
+  afm_test::build_cdt(cdt, c.in);
+  const auto seeds = afm_test::seeds_of<CDT>(c.in);
+  afm_test::Mesher<CDT, afm_robustness::Case_size<Epick> > mesher(cdt, afm_robustness::Case_size<Epick>(c));
+  mesher.set_seeds(seeds.begin(), seeds.end());
+  mesher.set_constraint_splitting(split);
+  AFM_CHECK_MSG(mesher.refine_mesh() == AFM::MESH_COMPLETE, c.name);
+}
+
+} // namespace
+
+AFM_TEST_CASE(test_min_angle_bound_is_checked)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  CDT cdt;
+  afm_test::build_cdt(cdt, unit_square(0));
+  for(double bad : {0., -1., 30.5, std::nan("")}) {
+    bool thrown = false;
+    try {
+      AFM::refine_to_minimum_angle_2(cdt, bad);
+    } catch(const std::invalid_argument&) {
+      thrown = true;
+    }
+    AFM_CHECK_MSG(thrown, bad);
+  }
+}
+
+// The catalogue of hard inputs at 30 degrees, segments split: only the
+// documented exceptions stay below (none, as measured); the extreme scales
+// are above 30 degrees from the frontal pass already.
+AFM_TEST_CASE(test_min_angle_catalogue)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  std::size_t changed = 0, total = 0;
+  for(const afm_robustness::Case& c : afm_robustness::catalogue()) {
+    CDT cdt;
+    mesh_case(cdt, c, true);
+    const afm_robustness::Case_size<Epick> size(c);
+    const AFM::Minimum_angle_statistics st = AFM::refine_to_minimum_angle_2(cdt, 30);
+    std::cout << "  " << c.name << ": " << st.below_before << " of " << st.triangles_before << " below 30, "
+              << st.points_inserted << " points inserted, " << st.triangles_changed << " triangles changed, "
+              << st.below_after << " left, smallest " << st.smallest_angle << "\n";
+    check_minimum_angle<Epick>(cdt, c.in, size, 30, st, true, c.name);
+    AFM_CHECK_MSG(st.below_after == 0, c.name << ": " << st.below_after);
+    changed += st.triangles_changed;
+    total += st.triangles_after;
+  }
+  AFM_CHECK(changed > 0 && changed < total);
+}
+
+// Random domains (sampled sides and holes, small input angles, points near
+// segments, scales 1e-3 to 1e3) at 30 degrees: the refinement ends and
+// leaves only the exceptions. benchmark/ runs 10,000.
+AFM_TEST_CASE(test_min_angle_random_domains)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  std::size_t left = 0;
+  for(std::uint64_t seed = 0; seed < 120; ++seed) {
+    afm_random::Generator g(seed);
+    const afm_random::Domain d = g.domain();
+    const AFM::Uniform_sizing_field_2<Epick> size(g.uniform(0.05, 0.15) * d.scale);
+    CDT cdt;
+    afm_test::build_cdt(cdt, d.pslg);
+    const auto seeds = afm_test::seeds_of<CDT>(d.pslg);
+    afm_test::Mesher<CDT, AFM::Uniform_sizing_field_2<Epick> > mesher(cdt, size);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+    const AFM::Minimum_angle_statistics st = AFM::refine_to_minimum_angle_2(cdt, 30);
+    check_minimum_angle<Epick>(cdt, d.pslg, size, 30, st, true, "random domain " + std::to_string(seed));
+    left += st.below_after;
+  }
+  std::cout << "  " << left << " triangles left below 30 degrees, all near small input angles\n";
+}
+
+// With the segments kept (the paper's mode): no input segment is split, the
+// mesh is valid and constrained Delaunay.
+AFM_TEST_CASE(test_min_angle_keep_segments)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  for(const afm_robustness::Case& c : afm_robustness::catalogue()) {
+    CDT cdt;
+    mesh_case(cdt, c, false);
+    const afm_robustness::Case_size<Epick> size(c);
+    const std::size_t constrained_before = std::distance(cdt.constrained_edges_begin(), cdt.constrained_edges_end());
+    const AFM::Minimum_angle_statistics st = AFM::refine_to_minimum_angle_2(cdt, 30, false);
+    check_minimum_angle<Epick>(cdt, c.in, size, 30, st, false, "kept, " + c.name);
+    AFM_CHECK_MSG(std::size_t(std::distance(cdt.constrained_edges_begin(), cdt.constrained_edges_end()))
+                    == constrained_before,
+                  c.name << ": a kept segment was split");
+  }
+}
+
+// A Mesh_2 criteria object's shape bound B is kept: with the default B =
+// 0.125 (20.7 degrees) no triangle is below 20.7 degrees but the
+// exceptions; with B = 0 the frontal mesh stays as it is (and has some).
+AFM_TEST_CASE(test_min_angle_from_mesh_2_criteria)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  const afm_test::Poly_data in = afm_geometry::many_holes(8, 2);
+  const double h = 0.05;
+  const double bound = std::asin(std::sqrt(0.125)) * 180 / CGAL_PI;
+  std::size_t below_without = 0;
+  for(double b : {0., 0.125}) {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    const auto seeds = afm_test::seeds_of<CDT>(in);
+    AFM_CHECK(CGAL::advancing_front_mesh_2(cdt, seeds.begin(), seeds.end(), CGAL::Delaunay_mesh_size_criteria_2<CDT>(b, h / 0.7))
+              == AFM::MESH_COMPLETE);
+    // measured on the result: refining it again finds nothing below
+    const AFM::Minimum_angle_statistics st = AFM::refine_to_minimum_angle_2(cdt, bound, true, 1);
+    if(b == 0) {
+      below_without = st.below_before;
+    } else {
+      AFM_CHECK_MSG(st.below_before == 0, st.below_before << " triangles below " << bound);
+      check_minimum_angle<Epick>(cdt, in, AFM::Uniform_sizing_field_2<Epick>(h), bound, st, true, "criteria");
+    }
+  }
+  AFM_CHECK_MSG(below_without > 0, "the frontal mesh of many_holes has no triangle below 20.7 degrees: the test "
+                                   "would not see the mapping");
+}

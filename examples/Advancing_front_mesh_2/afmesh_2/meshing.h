@@ -12,6 +12,7 @@
 #include <CGAL/Advancing_front_mesh_2/IO/Streaming_tagging_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
 #include <CGAL/Advancing_front_mesh_2/quality_smooth_mesh_2.h>
+#include <CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h>
 
 #include <boost/property_map/function_property_map.hpp>
 
@@ -168,6 +169,67 @@ AFM::Smoothing_statistics smooth(const Options& opt, Input<K>& in)
     [&](typename CDT::Vertex_handle v) { return input_vertices.count(v) > 0; });
   const auto np = CGAL::parameters::number_of_iterations(opt.smooth).vertex_is_constrained_map(held);
   return opt.smoother == "laplacian" ? CGAL::laplacian_smooth_mesh_2(in.cdt, np) : CGAL::quality_smooth_mesh_2(in.cdt, np);
+}
+
+// A constrained edge (a, b) that the refinement split at midpoints is now a
+// chain of constrained edges from a to b: its marker goes to each piece
+// (and to the new vertices, by Triangle's rules). The chain is straight up
+// to the rounding of the midpoints, so each step takes the constrained
+// edge that heads most nearly towards b.
+template <class CDT>
+void carry_marker_along_chain(const CDT& cdt, AFM::Markers_and_regions_2<CDT>& tags, typename CDT::Vertex_handle a,
+                              typename CDT::Vertex_handle b)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  if(cdt.is_edge(a, b)) return;
+  const double bx = CGAL::to_double(b->point().x()), by = CGAL::to_double(b->point().y());
+  Vertex_handle at = a, came_from;
+  for(std::size_t steps = 0; at != b && steps < cdt.number_of_vertices(); ++steps) {
+    Vertex_handle next;
+    double best = -2;
+    auto e = cdt.incident_edges(at), done = e;
+    do {
+      if(!cdt.is_constrained(*e)) continue;
+      const int i = e->second;
+      Vertex_handle w = e->first->vertex(CDT::ccw(i));
+      if(w == at) w = e->first->vertex(CDT::cw(i));
+      if(w == came_from || cdt.is_infinite(w)) continue;
+      const double ax = CGAL::to_double(at->point().x()), ay = CGAL::to_double(at->point().y());
+      const double ux = CGAL::to_double(w->point().x()) - ax, uy = CGAL::to_double(w->point().y()) - ay;
+      const double vx = bx - ax, vy = by - ay;
+      const double cosine = (ux * vx + uy * vy) / (std::hypot(ux, uy) * std::hypot(vx, vy));
+      if(cosine > best) {
+        best = cosine;
+        next = w;
+      }
+    } while(++e != done);
+    if(next == Vertex_handle()) return;
+    if(next != b) tags.split_constraint(at, b, next);
+    came_from = at;
+    at = next;
+  }
+}
+
+// --min-angle A after the smoothing: Mesh_2's refinement of the triangles
+// below A (splitting segments unless --keep-segments), markers carried over
+// the segments it splits; a note when the safeguard stopped it.
+template <class K>
+AFM::Minimum_angle_statistics raise_minimum_angle(const Options& opt, Input<K>& in)
+{
+  typedef typename Types<K>::CDT CDT;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  if(opt.min_angle == 0) return AFM::Minimum_angle_statistics();
+  std::vector<std::pair<Vertex_handle, Vertex_handle> > constrained;
+  if(in.tags.has_markers() && !opt.keep_segments)
+    for(const auto& e : in.cdt.constrained_edges())
+      constrained.emplace_back(e.first->vertex(CDT::ccw(e.second)), e.first->vertex(CDT::cw(e.second)));
+  const AFM::Minimum_angle_statistics st = AFM::refine_to_minimum_angle_2(in.cdt, opt.min_angle, !opt.keep_segments);
+  for(const auto& ab : constrained) carry_marker_along_chain(in.cdt, in.tags, ab.first, ab.second);
+  if(!st.completed)
+    std::cerr << "afmesh_2: warning: " << opt.input << ": --min-angle " << opt.min_angle
+              << ": the refinement stopped at its limit of insertions with " << st.below_after
+              << " triangles below the bound (the mesh is valid)\n";
+  return st;
 }
 
 } // namespace afmesh_2

@@ -50,6 +50,7 @@ struct Options
   bool report = false;
   bool no_pocket_priority = false;
   bool keep_segments = false; // --keep-segments: no boundary discretisation, as Triangle's -Y
+  double min_angle = 0;       // --min-angle A in degrees, 0: off
   double time_limit = 0;     // seconds of meshing, 0: none
   std::size_t max_steps = 0; // front edges processed, 0: none
   std::size_t smooth = 0;
@@ -140,6 +141,10 @@ inline po::options_description visible_options(Command_line& c)
     ("keep-segments", po::bool_switch(&opt.keep_segments),
      "keep every input segment as one mesh edge, as the paper does (Triangle's -Y); by default segments "
      "longer than the local size are first split to the size field")
+    ("min-angle", po::value<double>(&opt.min_angle),
+     "A: after meshing (and smoothing), raise the smallest angle to A degrees (0 < A <= 30) by local "
+     "Delaunay refinement of the few triangles below it (Mesh_2's, with segment splitting unless "
+     "--keep-segments); triangles at input angles below about 60 degrees may stay below (see the manual)")
     ("no-pocket-priority", po::bool_switch(&opt.no_pocket_priority),
      "mesh the front's pockets in shortest-first order too: a little better quality "
      "where patches meet, a front up to 4 times larger")
@@ -263,6 +268,8 @@ inline void check_streaming(const Options& opt)
     if(ends_with(out, ".poly"))
       throw Usage_error("--stream cannot write the boundary (.poly): it is written with the mesh in memory");
   if(opt.smooth > 0) throw Usage_error("--stream cannot be combined with --smooth (smoothing needs the whole mesh)");
+  if(opt.min_angle != 0)
+    throw Usage_error("--stream cannot be combined with --min-angle (the refinement needs the whole mesh)");
   if(!opt.histogram.empty()) throw Usage_error("--stream cannot be combined with --histogram");
 }
 
@@ -301,6 +308,9 @@ inline void check_new_run(Command_line& c)
     throw Usage_error("--size must be a positive number");
   // read as a signed number: Boost reads "-1" into an unsigned as its largest value
   if(c.smooth < 0 || c.smooth > 1000) throw Usage_error("--smooth must be a number of passes from 0 to 1000");
+  if(c.vm.count("min-angle") != 0 && !(opt.min_angle > 0 && opt.min_angle <= 30))
+    throw Usage_error("--min-angle must be an angle in degrees above 0 and at most 30 (above 30 Delaunay "
+                      "refinement need not terminate), not " + std::to_string(opt.min_angle));
   opt.smooth = std::size_t(c.smooth);
   if(opt.smoother != "quality" && opt.smoother != "laplacian")
     throw Usage_error("--smoother must be quality or laplacian, not '" + opt.smoother + "'");

@@ -43,7 +43,7 @@ inline Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr)
 // The times of a run in memory (seconds).
 struct Run_times
 {
-  double meshing = 0, smoothing = 0, writing = 0, total = 0;
+  double meshing = 0, smoothing = 0, min_angle = 0, writing = 0, total = 0;
 };
 
 inline void print_report_text(const Options& opt, const std::string& text)
@@ -64,15 +64,20 @@ inline void print_streamed_report(const Options& opt, const AFM::Statistics& st,
 
 inline void print_report(const Options& opt, const AFM::Statistics& st, const AFM::Mesh_quality& unsmoothed,
                          const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t,
-                         const std::string& boundary)
+                         const std::string& boundary, const AFM::Minimum_angle_statistics& angle)
 {
   std::ostringstream os;
   os << std::setprecision(4);
-  os << opt.input << ": " << st.number_of_vertices << " vertices, " << q.number_of_triangles << " triangles in "
+  os << opt.input << ": " << st.number_of_vertices + angle.points_inserted << " vertices, " << q.number_of_triangles
+     << " triangles in "
      << t.meshing << " s (" << (t.meshing > 0 ? st.number_of_faces / t.meshing : 0) << " triangles/s)";
   if(opt.smooth > 0)
     os << ", then " << smoothing.passes << " " << opt.smoother << " smoothing passes in " << t.smoothing << " s (" << smoothing.moves
        << " moves, " << smoothing.flips << " flips)";
+  if(opt.min_angle > 0)
+    os << ", then the minimum angle raised to " << opt.min_angle << " degrees in " << t.min_angle << " s ("
+       << angle.below_before << " triangles below it, " << angle.points_inserted << " points inserted, "
+       << angle.triangles_changed << " triangles changed, " << angle.below_after << " left below)";
   os << "\n";
   auto line = [&](const char* when, const AFM::Mesh_quality& m) {
     os << "  " << when << "radius ratio 2r/R: min " << m.min_radius_ratio << ", 1% " << m.radius_ratio_p1 << ", 5% "
@@ -83,7 +88,7 @@ inline void print_report(const Options& opt, const AFM::Statistics& st, const AF
        << "  " << when << "edge length / h: " << m.min_edge_over_size << " to " << m.max_edge_over_size << ", mean "
        << m.mean_edge_over_size << ", " << 100 * m.share_edges_within_sqrt2 << "% within [0.71, 1.41]\n";
   };
-  if(opt.smooth > 0) line("before smoothing, ", unsmoothed);
+  if(opt.smooth > 0 || opt.min_angle > 0) line(opt.smooth > 0 ? "before smoothing, " : "before refinement, ", unsmoothed);
   line("", q);
   os << "  " << boundary << "\n";
   print_report_text(opt, os.str());
@@ -217,7 +222,8 @@ Json boundary_discretisation_json(const Options& opt, const Input<K>& in)
 
 template <class K>
 Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_code rc, const AFM::Statistics& st,
-                     const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t)
+                     const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t,
+                     const AFM::Minimum_angle_statistics& angle)
 {
   Json j;
   j["input"] = opt.input;
@@ -229,12 +235,14 @@ Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_co
                             {"duplicate_segments", in.inserted.duplicate_segments},
                             {"points_on_segments", in.inserted.points_on_segments}};
   j["boundary_discretisation"] = boundary_discretisation_json(opt, in);
-  j["vertices"] = st.number_of_vertices;
-  j["triangles"] = st.number_of_faces;
+  // the mesh written: with --min-angle, the refinement's points and triangles too
+  j["vertices"] = st.number_of_vertices + angle.points_inserted;
+  j["triangles"] = st.number_of_faces + angle.triangles_after - angle.triangles_before;
   j["time"] = Json{{"read", number(in.times.read)},       {"boundary", number(in.times.boundary)},
                    {"size_field", number(in.times.size_field)}, {"boundary_split", number(in.times.boundary_split)},
                    {"mesh", number(t.meshing)},
-                   {"smooth", number(t.smoothing)},       {"write", number(t.writing)},
+                   {"smooth", number(t.smoothing)},       {"min_angle", number(t.min_angle)},
+                   {"write", number(t.writing)},
                    {"total", number(t.total)}};
   j["triangles_per_second"] = t.meshing > 0 ? st.number_of_faces / t.meshing : 0.;
   j["statistics"] = mesher_statistics_json(st);
@@ -245,6 +253,12 @@ Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_co
                         {"moves", smoothing.moves},
                         {"rejected_moves", smoothing.rejected_moves},
                         {"flips", smoothing.flips}};
+  j["min_angle"] = Json{{"bound", number(opt.min_angle)},
+                        {"below_before", angle.below_before},
+                        {"points_inserted", angle.points_inserted},
+                        {"triangles_changed", angle.triangles_changed},
+                        {"below_after", angle.below_after},
+                        {"completed", angle.completed}};
   return j;
 }
 

@@ -51,14 +51,18 @@ int finish_run_in_memory(const Options& opt, Input<K>& in, const Mesher<K>& mesh
   const auto t_smooth = std::chrono::steady_clock::now();
   const AFM::Smoothing_statistics smoothing = smooth(opt, in);
   t.smoothing = seconds_since(t_smooth);
-  const AFM::Mesh_quality q = want_quality && opt.smooth > 0 ? AFM::mesh_quality(in.cdt, in.sizing) : unsmoothed;
+  const auto t_angle = std::chrono::steady_clock::now();
+  const AFM::Minimum_angle_statistics angle = raise_minimum_angle(opt, in);
+  t.min_angle = seconds_since(t_angle);
+  const AFM::Mesh_quality q =
+    want_quality && (opt.smooth > 0 || opt.min_angle > 0) ? AFM::mesh_quality(in.cdt, in.sizing) : unsmoothed;
   const auto t_write = std::chrono::steady_clock::now();
   if(!write_outputs(opt, in.cdt, in.tags, q)) return 3;
   t.writing = seconds_since(t_write);
   const AFM::Statistics& st = mesher.statistics();
-  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t, boundary_summary(opt, in));
+  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t, boundary_summary(opt, in), angle);
   t.total = seconds_since(t_start);
-  if(opt.stats) print_statistics(statistics_json(opt, in, rc, st, q, smoothing, t));
+  if(opt.stats) print_statistics(statistics_json(opt, in, rc, st, q, smoothing, t, angle));
   return 0;
 }
 

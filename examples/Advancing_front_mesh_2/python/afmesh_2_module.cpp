@@ -154,6 +154,7 @@ py::dict mesh_with(const AFM::IO::Poly_data& data, const Request& request)
     py::gil_scoped_release free_python;
     run_mesher<K>(opt, mesher, rc);
     smooth(opt, in);
+    raise_minimum_angle(opt, in);
   }
   if(in.tags.has_regions()) in.tags.mark_regions(in.cdt);
   AFM::IO::internal::Mesh_domain_view<CDT> m;
@@ -188,13 +189,16 @@ py::dict mesh(const py::object& vertices, const py::object& segments, const py::
               const py::object& regions, const py::object& vertex_markers, const py::object& segment_markers,
               const py::object& size, const py::object& sources, const py::object& max_size, const py::object& grading,
               const std::string& boundary_spacing, std::size_t smooth, const std::string& smoother,
-              const std::string& kernel, bool keep_segments)
+              const std::string& kernel, bool keep_segments, double min_angle)
 {
   const AFM::IO::Poly_data data = poly_data(vertices, segments, holes, regions, vertex_markers, segment_markers);
   Request r;
   afmesh_2::Options& opt = r.opt;
   opt.input = "PSLG";
   opt.keep_segments = keep_segments;
+  if(min_angle != 0 && !(min_angle > 0 && min_angle <= 30))
+    throw py::value_error("min_angle must be an angle in degrees above 0 and at most 30, or 0 for none");
+  opt.min_angle = min_angle;
   if(!size.is_none() && PyCallable_Check(size.ptr())) {
     r.size_function = size;
   } else if(!size.is_none()) {
@@ -247,7 +251,7 @@ PYBIND11_MODULE(_afmesh_2, m)
         py::arg("segment_markers") = py::none(), py::arg("size") = py::none(), py::arg("sources") = py::none(),
         py::arg("max_size") = py::none(), py::arg("grading") = 0.2, py::arg("boundary_spacing") = "grow",
         py::arg("smooth") = 0, py::arg("smoother") = "quality", py::arg("kernel") = "epick",
-        py::arg("keep_segments") = false,
+        py::arg("keep_segments") = false, py::arg("min_angle") = 0.0,
         "Meshes the domain of a planar straight-line graph; see afmesh_2.mesh().");
   m.attr("__version__") = CGAL_ADVANCING_FRONT_MESH_2_VERSION_STR;
 }

@@ -183,6 +183,33 @@ def test_boundary_discretisation():
     assert np.array_equal(m.points, points) and np.array_equal(m.triangles, triangles)
 
 
+def test_min_angle():
+    """min_angle=30 as afmesh_2 --min-angle 30: the same mesh, every angle of at least
+    30 degrees but at the wedge's 16.7 degree corner; bad bounds are a ValueError."""
+    path = os.path.join(WORK, "wedge.poly")
+    with open(path, "w") as f:
+        f.write("3 2 0 0\n1 0 0\n2 1 0\n3 1 0.3\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n")
+    v, s, h, _, _, _ = read_poly(path)
+    m = afmesh_2.mesh(v, s, h, size=0.05, min_angle=30)
+    check_valid(path, m, "wedge_min_angle")
+    p = m.points[m.triangles]
+    smallest = []
+    for i in range(3):
+        a, b = p[:, (i + 1) % 3] - p[:, i], p[:, (i + 2) % 3] - p[:, i]
+        cosine = (a * b).sum(1) / np.linalg.norm(a, axis=1) / np.linalg.norm(b, axis=1)
+        smallest.append(np.degrees(np.arccos(np.clip(cosine, -1, 1))))
+    smallest = np.min(smallest, axis=0)
+    at_corner = np.linalg.norm(p, axis=2).min(1) < 0.1
+    assert (smallest[~at_corner] >= 30 - 1e-6).all()
+    base = os.path.join(WORK, "wedge_cli")
+    run(AFMESH, path, "--size", "0.05", "--min-angle", "30", "-o", base + ".node")
+    points, triangles = read_node_ele(base)
+    assert np.array_equal(m.points, points) and np.array_equal(m.triangles, triangles)
+    for bad in (-1, 31, float("nan")):
+        with pytest.raises(ValueError):
+            afmesh_2.mesh(v, s, h, size=0.05, min_angle=bad)
+
+
 def test_sources_and_kernels(airfoil):
     v, s, h, _, _, _ = read_poly(airfoil)
     sources = np.array([[0.0, 0.0, 0.02], [1.0, 0.0, 0.04]])

@@ -86,7 +86,7 @@ def grid_size(xs, ys, h):
 
 def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=None, segment_markers=None,
          size=None, sources=None, max_size=None, grading=0.2, boundary_spacing="grow", smooth=0,
-         smoother="quality", kernel="epick", keep_segments=False):
+         smoother="quality", kernel="epick", keep_segments=False, min_angle=0.0):
     """Meshes the domain bounded by `segments`.
 
     vertices: (n, 2) coordinates; segments: (m, 2) 0-based indices into vertices;
@@ -108,8 +108,9 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
     Regions with an area limit bound any of them. Segments longer than the
     local size are split to it first, unless keep_segments=True (every
     segment one mesh edge, as afmesh_2 --keep-segments). smooth=N runs N passes of
-    the smoother ('quality' or 'laplacian'); kernel: 'epick', 'epeck' or
-    'exact-rational'.
+    the smoother ('quality' or 'laplacian'); min_angle=A (0 < A <= 30) then
+    raises the smallest angle to A degrees by local Delaunay refinement, as
+    afmesh_2 --min-angle; kernel: 'epick', 'epeck' or 'exact-rational'.
 
     Invalid input raises ValueError (InputError for a graph that cannot be
     meshed, with the message of the afmesh_2 tool). The GIL is released while
@@ -121,4 +122,4 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
         size = grid_size(*size)
     return Mesh(**_mesh(vertices, segments, holes, regions, vertex_markers, segment_markers, size, sources,
                         max_size, grading, boundary_spacing, smooth, smoother, kernel,
-                        keep_segments))
+                        keep_segments, float(min_angle)))

@@ -16,6 +16,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
@@ -38,6 +39,7 @@ struct Sizing_field_maker
 {
   typedef T type;
   static const T& make(const T& t) { return t; }
+  static double minimum_angle(const T&) { return 0; }
 };
 template <class Gt, class T>
 struct Sizing_field_maker<Gt, T, std::enable_if_t<std::is_arithmetic<T>::value ||
@@ -52,6 +54,7 @@ struct Sizing_field_maker<Gt, T, std::enable_if_t<std::is_arithmetic<T>::value |
       throw std::invalid_argument("advancing_front_mesh_2: the target edge length must be a positive finite number");
     return type(typename Gt::FT(t));
   }
+  static double minimum_angle(const T&) { return 0; }
 };
 template <class Gt, class T>
 struct Sizing_field_maker<Gt, T, std::enable_if_t<Has_size_bound<T>::value> >
@@ -63,6 +66,15 @@ struct Sizing_field_maker<Gt, T, std::enable_if_t<Has_size_bound<T>::value> >
       throw std::invalid_argument("advancing_front_mesh_2: the Mesh_2 criteria have no size bound "
                                   "(size_bound() == 0); an advancing front needs a size");
     return type(t);
+  }
+  // Mesh_2's shape bound B (the squared sine of the smallest angle, 0.125
+  // for 20.7 degrees by default) as an angle in degrees, at most 30 (see
+  // refine_to_minimum_angle_2()); 0 when B asks for nothing
+  static double minimum_angle(const T& t)
+  {
+    const double b = t.bound();
+    if(!(b > 0)) return 0;
+    return (std::min)(30.0, std::asin(std::sqrt((std::min)(b, 1.0))) * 180 / CGAL_PI);
   }
 };
 
