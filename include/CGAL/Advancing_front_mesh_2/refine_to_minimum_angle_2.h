@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <set>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -171,23 +171,37 @@ Minimum_angle_statistics refine_to_minimum_angle_2(CDT& cdt, double degrees, boo
   typedef std::array<typename CDT::Vertex_handle, 3> Triple;
   Minimum_angle_statistics st;
   st.angle = degrees;
-  std::set<Triple> before;
   auto for_domain_faces = [&](auto&& visit) {
     for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
       if(f->is_in_domain()) visit(Face_handle(f));
   };
-  // below the bound beyond rounding (Mesh_2 decides on the squared sine)
-  auto below = [&](Face_handle f) {
-    return internal::smallest_angle_degrees(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point())
-           < degrees * (1 - 1e-9);
+  auto smallest_angle = [](Face_handle f) {
+    return internal::smallest_angle_degrees(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
   };
+  // below the bound beyond rounding (Mesh_2 decides on the squared sine)
+  auto below = [&](double angle) { return angle < degrees * (1 - 1e-9); };
+  st.smallest_angle = 180;
   for_domain_faces([&](Face_handle f) {
+    const double angle = smallest_angle(f);
     ++st.triangles_before;
-    st.below_before += below(f) ? 1 : 0;
-    before.insert(internal::sorted_vertices<CDT>(f));
+    st.below_before += below(angle) ? 1 : 0;
+    st.smallest_angle = (std::min)(st.smallest_angle, angle);
   });
+  // Nothing to refine (the usual case after smoothing on smooth fields): the
+  // mesh is the result, and one scan was all it cost.
+  if(st.below_before == 0 || cdt.dimension() != 2) {
+    st.triangles_after = st.triangles_before;
+    st.below_after = st.below_before;
+    if(st.triangles_after == 0) st.smallest_angle = 0;
+    return st;
+  }
+  // The frontal triangles, sorted, to count the ones the refinement changed.
+  std::vector<Triple> before;
+  before.reserve(st.triangles_before);
+  for_domain_faces([&](Face_handle f) { before.push_back(internal::sorted_vertices<CDT>(f)); });
+  std::sort(before.begin(), before.end());
   const std::size_t vertices_before = cdt.number_of_vertices();
-  if(st.below_before != 0 && cdt.dimension() == 2) {
+  {
     const std::size_t limit = max_insertions != 0 ? max_insertions : 10 * st.triangles_before + 1000;
     // Mesh_2's shape criterion: the squared sine of the smallest angle
     const double sine = std::sin(degrees * CGAL_PI / 180);
@@ -203,12 +217,11 @@ Minimum_angle_statistics refine_to_minimum_angle_2(CDT& cdt, double degrees, boo
   st.points_inserted = cdt.number_of_vertices() - vertices_before;
   st.smallest_angle = 180;
   for_domain_faces([&](Face_handle f) {
+    const double angle = smallest_angle(f);
     ++st.triangles_after;
-    st.below_after += below(f) ? 1 : 0;
-    st.triangles_changed += before.count(internal::sorted_vertices<CDT>(f)) == 0 ? 1 : 0;
-    st.smallest_angle = (std::min)(st.smallest_angle, internal::smallest_angle_degrees(
-                                                        f->vertex(0)->point(), f->vertex(1)->point(),
-                                                        f->vertex(2)->point()));
+    st.below_after += below(angle) ? 1 : 0;
+    st.triangles_changed += std::binary_search(before.begin(), before.end(), internal::sorted_vertices<CDT>(f)) ? 0 : 1;
+    st.smallest_angle = (std::min)(st.smallest_angle, angle);
   });
   if(st.triangles_after == 0) st.smallest_angle = 0;
   return st;
