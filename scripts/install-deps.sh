@@ -4,10 +4,11 @@
 set -euo pipefail
 # Extra packages can be named as arguments (the tests add clang for libFuzzer).
 # The library needs CGAL (with GMP and MPFR) and Boost; Eigen only for the
-# Poisson size field; Boost.Program_options and nlohmann-json only for the
+# Poisson size field; oneTBB only for meshing on several threads;
+# Boost.Program_options and nlohmann-json only for the
 # command-line tool.
 packages=(libcgal-dev libboost-dev libboost-program-options-dev libgmp-dev libmpfr-dev libeigen3-dev
-          nlohmann-json3-dev "$@")
+          nlohmann-json3-dev libtbb-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -4,7 +4,8 @@
 # build under AddressSanitizer + UndefinedBehaviorSanitizer; then builds the
 # libFuzzer targets with clang and runs each for AFM_FUZZ_SECONDS (default
 # 60) from its corpus. Two kinds of tests run in one build only, to keep
-# the run within CI's time: the mesher's tests with the other search
+# the run within CI's time: the threaded tests also run under
+# ThreadSanitizer (a third build of their executable alone); the mesher's tests with the other search
 # structures (Kd_tree, brute force) in the sanitizer build, which is also a
 # Debug build with CGAL's assertions on, and the consumer project of the
 # installed package (a build test) in the plain Debug build.
@@ -26,6 +27,15 @@ for variant in debug asan; do
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir "build/$variant" --output-on-failure -j"$jobs" --timeout 1500
 done
+
+# The threaded tests once more under ThreadSanitizer (only their executable
+# is built; the parts run on std::threads there, see mesh_in_parallel_2.h)
+echo "=== tsan build (the threaded tests) ==="
+cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE_THREAD=ON -DAFM_BUILD_EXAMPLES=OFF \
+  -DAFM_TEST_SEARCH_MODELS=OFF -DAFM_TEST_PACKAGE=OFF > /dev/null
+cmake --build build/tsan -j"$jobs" --target test_parallel_meshing
+echo "=== tsan tests ==="
+TSAN_OPTIONS=halt_on_error=1 ctest --test-dir build/tsan --output-on-failure -j"$jobs" --timeout 1500 -R '^test_parallel_'
 
 fuzz_seconds=${AFM_FUZZ_SECONDS:-60}
 echo "=== fuzz build (clang, libFuzzer + ASan + UBSan) ==="

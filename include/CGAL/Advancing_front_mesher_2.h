@@ -152,6 +152,7 @@ public:
   {
     refiner_.seeds.assign(b, e);
     refiner_.seeds_mark = mark;
+    refiner_.keep_domain_marks = false;
     refiner_.invalidate();
   }
 
@@ -159,6 +160,26 @@ public:
   {
     refiner_.seeds.clear();
     refiner_.seeds_mark = false;
+    refiner_.keep_domain_marks = false;
+    refiner_.invalidate();
+  }
+
+  /*!
+  Takes the domain from the faces' in-domain marks (`is_in_domain()`) as
+  they are when meshing starts, instead of from the seeds: for a domain that
+  no set of seeds describes, such as one part of a decomposed domain
+  (`advancing_front_mesh_2_in_parallel()` marks each part so). The marked
+  faces must be bounded by constrained edges. The constraints are then not
+  split to the size field (`set_constraint_splitting()` is ignored: the
+  faces a split makes could not be marked again); split them beforehand
+  with `split_constraints_to_size_2()`. `set_seeds()` and `clear_seeds()`
+  turn it off.
+  */
+  void use_domain_marks()
+  {
+    refiner_.seeds.clear();
+    refiner_.seeds_mark = false;
+    refiner_.keep_domain_marks = true;
     refiner_.invalidate();
   }
 

@@ -2,7 +2,8 @@
 # may include the package's headers of its own layer and of lower layers,
 # never of a higher one. The headers beside the mesher (IO, quality,
 # smoothing, the Poisson field) may include layer 0 and each other, never the
-# mesher's layers 1-6. A header without a layer fails the test too, so a new
+# mesher's layers 1-6; layer 7 (parallel meshing) may include all of them. A
+# header without a layer fails the test too, so a new
 # one must be placed here.
 #
 #   cmake -DINCLUDE_DIR=<repository>/include -DWORK_DIR=<scratch> -P layering_test.cmake
@@ -34,6 +35,7 @@ set(AFM_LAYERS
   "0 CGAL/Advancing_front_mesh_2/internal/Segment_size_division.h"
   "0 CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h"
   "0 CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h"
+  "0 CGAL/Advancing_front_mesh_2/internal/Strip_decomposition_2.h"
   # L1: the search structures (models of the two concepts)
   "1 CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h"
   "1 CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h"
@@ -63,6 +65,9 @@ set(AFM_LAYERS
   "5 CGAL/Advancing_front_mesh_2/internal/Sizing_field_maker.h"
   # L6: the documented interface
   "6 CGAL/Advancing_front_mesher_2.h"
+  # L7: built on the mesher and the tools beside it (the parts of a
+  # decomposed domain meshed at once, their seams smoothed)
+  "7 CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h"
   # beside the mesher
   "B CGAL/Advancing_front_mesh_2/Mesh_quality.h"
   "B CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h"
@@ -109,6 +114,8 @@ function(afm_may_include from to out)
     else()
       set(${out} FALSE PARENT_SCOPE)
     endif()
+  elseif(from STREQUAL "7")
+    set(${out} TRUE PARENT_SCOPE)
   elseif(to STREQUAL "B")
     set(${out} FALSE PARENT_SCOPE)
   elseif(to GREATER from)

@@ -111,6 +111,8 @@ public:
   // ---------------------------------------------------------- settings
   Seeds seeds;
   bool seeds_mark = false;
+  // the domain is the faces marked when meshing starts (no seeds)
+  bool keep_domain_marks = false;
   // the boundary discretisation before the front is built (off: the paper's
   // mode, every input segment one front edge)
   bool split_constraints = true;
@@ -222,9 +224,11 @@ void Advancing_front_refiner<Tr, S, V, P, C>::init(On_init on_init)
     return;
   }
   typedef CGAL::Delaunay_mesher_2<Tr, CGAL::Delaunay_mesh_criteria_2<Tr> > Mesh_2_mesher;
-  Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
+  if(!keep_domain_marks) Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
   split_statistics = Constraint_split_statistics();
-  if(split_constraints) {
+  // (with the domain given by marks, the faces a split makes could not be
+  // marked again: the caller splits)
+  if(split_constraints && !keep_domain_marks) {
     // the constraints that bound or cross the domain, to the size field;
     // the faces the splits made are marked again
     split_statistics = split_constraints_to_size_2(ctx_.tr, size_.sizing_field(),

@@ -103,11 +103,25 @@ public:
     find_movable_vertices();
   }
 
+  // Only `candidates` may move (those of them the rules allow), and the
+  // safety net after each pass flips about them only: a pass costs their
+  // number, not the mesh's (the seams of a decomposed mesh).
+  Star_smoother(CDT& cdt, const Held& held, const std::vector<Vertex_handle>& candidates,
+                const Moves& moves = Moves())
+    : cdt_(cdt), held_(held), moves_(moves), local_(true)
+  {
+    for(Vertex_handle v : candidates)
+      if(is_movable(v)) movable_.push_back(v);
+    stats_.movable_vertices = movable_.size();
+  }
+
   void pass();
   const Smoothing_statistics& statistics() const { return stats_; }
 
 private:
   void find_movable_vertices();
+  bool is_movable(Vertex_handle v) const;
+  std::size_t restore_about_movable();
   bool try_move(Vertex_handle v);
   bool try_in_order(Vertex_handle v, const Star_quality& before);
   bool try_best_first(Vertex_handle v, const Star_quality& before);
@@ -133,27 +147,47 @@ private:
   std::vector<std::pair<Vertex_handle, Vertex_handle> > diagonals_;
   std::vector<typename CDT::Edge> to_check_;
   std::size_t pass_flips_ = 0;
+  bool local_ = false;
 };
 
-// The vertices that may move: interior (all faces about them finite and in
-// the domain), on no constrained edge, not held.
+// A vertex may move when it is interior (all faces about it finite and in
+// the domain), on no constrained edge and not held.
+template <class CDT, class Held, class Moves>
+bool Star_smoother<CDT, Held, Moves>::is_movable(Vertex_handle v) const
+{
+  if(get(held_, v) || cdt_.are_there_incident_constraints(v)) return false;
+  Face_circulator fc = cdt_.incident_faces(v), done = fc;
+  if(fc == nullptr) return false;
+  do {
+    if(cdt_.is_infinite(fc) || !fc->is_in_domain()) return false;
+  } while(++fc != done);
+  return true;
+}
+
 template <class CDT, class Held, class Moves>
 void Star_smoother<CDT, Held, Moves>::find_movable_vertices()
 {
-  for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v) {
-    if(get(held_, Vertex_handle(v)) || cdt_.are_there_incident_constraints(v)) continue;
-    bool interior = true;
+  for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v)
+    if(is_movable(v)) movable_.push_back(v);
+  stats_.movable_vertices = movable_.size();
+}
+
+// The safety net of a local smoother: Lawson's flips from the edges of the
+// movable vertices' stars.
+template <class CDT, class Held, class Moves>
+std::size_t Star_smoother<CDT, Held, Moves>::restore_about_movable()
+{
+  std::vector<typename CDT::Edge> stack;
+  std::size_t flips = 0;
+  for(Vertex_handle v : movable_) {
     Face_circulator fc = cdt_.incident_faces(v), done = fc;
     if(fc == nullptr) continue;
     do {
-      if(cdt_.is_infinite(fc) || !fc->is_in_domain()) {
-        interior = false;
-        break;
-      }
+      for(int k = 0; k < 3; ++k) stack.emplace_back(fc, k);
     } while(++fc != done);
-    if(interior) movable_.push_back(v);
+    flips += lawson_flips(cdt_, stack, [](Face_handle, Face_handle) {});
   }
-  stats_.movable_vertices = movable_.size();
+  return flips;
 }
 
 template <class CDT, class Held, class Moves>
@@ -162,7 +196,7 @@ void Star_smoother<CDT, Held, Moves>::pass()
   for(Vertex_handle v : movable_)
     if(try_move(v)) ++stats_.moves;
   // nothing is expected to need a flip here: kept as a safety net
-  const std::size_t flips = pass_flips_ + restore_constrained_delaunay(cdt_);
+  const std::size_t flips = pass_flips_ + (local_ ? restore_about_movable() : restore_constrained_delaunay(cdt_));
   pass_flips_ = 0;
   stats_.flips += flips;
   stats_.flips_per_pass.push_back(flips);
@@ -341,6 +375,19 @@ Smoothing_statistics smooth_with(CDT& cdt, const NamedParameters& np)
   auto held = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                Constant_property_map<Vertex_handle, bool>(false));
   Star_smoother<CDT, decltype(held), Moves> smoother(cdt, held);
+  for(std::size_t pass = 0; pass < passes; ++pass) smoother.pass();
+  return smoother.statistics();
+}
+
+// The same for `candidates` only (nothing else moves), at a cost of their
+// number per pass.
+template <class Moves, class CDT>
+Smoothing_statistics smooth_vertices_with(CDT& cdt, const std::vector<typename CDT::Vertex_handle>& candidates,
+                                          std::size_t passes)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  const Constant_property_map<Vertex_handle, bool> held(false);
+  Star_smoother<CDT, Constant_property_map<Vertex_handle, bool>, Moves> smoother(cdt, held, candidates);
   for(std::size_t pass = 0; pass < passes; ++pass) smoother.pass();
   return smoother.statistics();
 }

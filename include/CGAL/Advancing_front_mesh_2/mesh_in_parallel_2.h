@@ -1,0 +1,603 @@
+// Copyright (c) 2026 The Advancing_front_mesh_2 authors.
+// All rights reserved.
+//
+// This file is part of the Advancing_front_mesh_2 add-on package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : The Advancing_front_mesh_2 authors
+
+#ifndef CGAL_ADVANCING_FRONT_MESH_2_MESH_IN_PARALLEL_2_H
+#define CGAL_ADVANCING_FRONT_MESH_2_MESH_IN_PARALLEL_2_H
+
+#include <CGAL/license/Advancing_front_mesh_2.h>
+
+#include <CGAL/Advancing_front_mesher_2.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Strip_decomposition_2.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Quality_smoother.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Star_smoother.h>
+
+#include <CGAL/Delaunay_mesh_criteria_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Handle_hash_function.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Advancing_front_mesh_2 {
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
+What `mesh_in_parallel_2()` did.
+*/
+struct Parallel_mesh_statistics
+{
+  /// the threads asked for, and the parts the domain was cut into (1: meshed
+  /// in one piece, by today's serial mesher)
+  std::size_t threads = 1, parts = 1;
+  /// 0 when the cuts are lines x = c, 1 when y = c
+  int axis = 0;
+  /// the cut positions, increasing
+  std::vector<double> cuts;
+  /// the predicted and the actual triangle count of each part
+  std::vector<double> predicted_triangles;
+  std::vector<std::size_t> part_triangles;
+  /// the points the cuts and their interfaces added to the boundary
+  std::size_t cut_points = 0, interface_points = 0;
+  /// why the domain was meshed in one piece, when it was (empty otherwise)
+  std::string one_piece_reason;
+  /// whether the parts' triangles were stitched into the triangulation (else
+  /// their points were inserted into it, a slower merge with the same result
+  /// up to cocircular points)
+  bool stitched = false;
+  /// the vertices near the cuts that were smoothed, and what the smoothing did
+  std::size_t seam_vertices = 0;
+  Smoothing_statistics seam_smoothing;
+  /// seconds: planning and cutting, meshing the parts (wall clock), merging,
+  /// smoothing the seams
+  double decomposition_time = 0, meshing_time = 0, merge_time = 0, seam_time = 0;
+  /// the statistics of each part's mesher (one entry when meshed in one piece)
+  std::vector<Statistics> part_statistics;
+};
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
+The statistics of several meshers as one: the counters summed, the largest
+sizes (front, active vertices, ...) the largest of any, the times summed
+(CPU time across the parts, not wall-clock time).
+*/
+inline Statistics sum_of(const std::vector<Statistics>& parts)
+{
+  Statistics s;
+  for(const Statistics& p : parts) {
+    s.front_edges_processed += p.front_edges_processed;
+    s.points_inserted += p.points_inserted;
+    s.triangles_closed_on_existing_points += p.triangles_closed_on_existing_points;
+    s.forced_closures += p.forced_closures;
+    s.rejected_points += p.rejected_points;
+    s.triangles_around_new_points += p.triangles_around_new_points;
+    s.triangles_removed += p.triangles_removed;
+    s.size_bound_raised += p.size_bound_raised;
+    s.broken_circle_queries += p.broken_circle_queries;
+    s.constraint_index_queries += p.constraint_index_queries;
+    s.point_search_queries += p.point_search_queries;
+    s.incircle_tests += p.incircle_tests;
+    s.largest_front = (std::max)(s.largest_front, p.largest_front);
+    s.pockets += p.pockets;
+    s.memory_compactions += p.memory_compactions;
+    s.largest_active_vertices = (std::max)(s.largest_active_vertices, p.largest_active_vertices);
+    s.largest_live_triangles = (std::max)(s.largest_live_triangles, p.largest_live_triangles);
+    s.delaunay_repair_flips += p.delaunay_repair_flips;
+    s.stream_sweeps += p.stream_sweeps;
+    s.largest_triangles_in_memory = (std::max)(s.largest_triangles_in_memory, p.largest_triangles_in_memory);
+    s.points_refused_for_finished_triangles += p.points_refused_for_finished_triangles;
+    s.finished_triangles_broken += p.finished_triangles_broken;
+    s.finished_triangles_held += p.finished_triangles_held;
+    s.finished_edges_not_delaunay += p.finished_edges_not_delaunay;
+    s.checkpoints_written += p.checkpoints_written;
+    s.number_of_vertices += p.number_of_vertices;
+    s.number_of_faces += p.number_of_faces;
+    s.init_time += p.init_time;
+    s.meshing_time += p.meshing_time;
+  }
+  return s;
+}
+
+namespace internal {
+
+inline double parallel_seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// One part of a decomposed domain in a triangulation of its own: the
+// constraints on its side of the cuts and the interface chains of the cuts
+// around it; its faces are marked by their region (connected across
+// unconstrained edges): a region is in the part when its largest face's
+// centroid lies between the part's cuts and in the domain of `cdt`.
+template <class CDT>
+void build_part(const CDT& cdt, const internal::Strip_plan& plan, std::size_t part,
+                const std::vector<std::pair<typename CDT::Point, typename CDT::Point> >& constraints,
+                const std::vector<std::vector<std::vector<typename CDT::Point> > >& chains_of_cut,
+                const std::vector<typename CDT::Point>& free_points, CDT& out)
+{
+  typedef typename CDT::Point Point;
+  typedef typename CDT::Face_handle Face_handle;
+  for(const auto& c : constraints) out.insert_constraint(c.first, c.second);
+  for(std::size_t cut : {part - 1, part}) {
+    if(cut >= chains_of_cut.size()) continue; // part - 1 wraps for part 0
+    for(const auto& chain : chains_of_cut[cut])
+      for(std::size_t k = 0; k + 1 < chain.size(); ++k) out.insert_constraint(chain[k], chain[k + 1]);
+  }
+  out.insert(free_points.begin(), free_points.end());
+  for(auto f = out.all_faces_begin(); f != out.all_faces_end(); ++f) f->set_in_domain(false);
+  if(out.dimension() < 2) return;
+  // the regions, by a walk across unconstrained edges
+  std::vector<Face_handle> region, stack;
+  std::unordered_set<Face_handle, Handle_hash_function> seen;
+  for(auto start = out.all_faces_begin(); start != out.all_faces_end(); ++start) {
+    if(!seen.insert(start).second) continue;
+    region.clear();
+    stack.assign(1, start);
+    bool infinite = false;
+    while(!stack.empty()) {
+      const Face_handle f = stack.back();
+      stack.pop_back();
+      region.push_back(f);
+      infinite = infinite || out.is_infinite(f);
+      for(int k = 0; k < 3; ++k) {
+        const Face_handle g = f->neighbor(k);
+        if(f->is_constrained(k) || !seen.insert(g).second) continue;
+        stack.push_back(g);
+      }
+    }
+    if(infinite) continue;
+    Face_handle largest;
+    double largest_area = -1;
+    for(Face_handle f : region) {
+      const double area = std::abs(CGAL::to_double(out.triangle(f).area()));
+      if(area > largest_area) {
+        largest_area = area;
+        largest = f;
+      }
+    }
+    const Point& p0 = largest->vertex(0)->point();
+    const Point& p1 = largest->vertex(1)->point();
+    const Point& p2 = largest->vertex(2)->point();
+    const double gx = (CGAL::to_double(p0.x()) + CGAL::to_double(p1.x()) + CGAL::to_double(p2.x())) / 3;
+    const double gy = (CGAL::to_double(p0.y()) + CGAL::to_double(p1.y()) + CGAL::to_double(p2.y())) / 3;
+    if(internal::part_of(internal::coordinate(gx, gy, plan.axis), plan.cuts) != part) continue;
+    typename CDT::Locate_type lt;
+    int li;
+    const Face_handle g = cdt.locate(Point(gx, gy), lt, li);
+    if(lt != CDT::FACE || cdt.is_infinite(g) || !g->is_in_domain()) continue;
+    for(Face_handle f : region) f->set_in_domain(true);
+  }
+}
+
+// A point as a hash key: equal points (exactly, by the kernel) are one key.
+template <class Point>
+struct Point_hash
+{
+  std::size_t operator()(const Point& p) const
+  {
+    const std::size_t hx = std::hash<double>()(CGAL::to_double(p.x())), hy = std::hash<double>()(CGAL::to_double(p.y()));
+    return hx ^ (hy + 0x9e3779b97f4a7c15ull + (hx << 6) + (hx >> 2));
+  }
+};
+
+// The merge without a search: the in-domain faces of `cdt` are replaced by
+// the parts' in-domain faces, linked to each other within a part as they
+// were, to the faces outside the domain across its boundary edges (which
+// the parts share with `cdt`: they were made from its constraints), and to
+// the other part's faces across the interfaces, which are released (not
+// constrained); Lawson's flips from the interface edges then make the mesh
+// constrained Delaunay across them. Everything is matched before anything
+// changes: false (and `cdt` and the parts as they were) when a part's
+// boundary does not fit (the caller inserts the points instead). Each part
+// is cleared once its triangles are copied. The vertices made are appended
+// to `made`.
+template <class CDT>
+bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::Vertex_handle>& made)
+{
+  typedef typename CDT::Point Point;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+  typedef std::pair<Point, Point> Point_pair;
+  struct Pair_hash
+  {
+    std::size_t operator()(const Point_pair& e) const
+    {
+      return Point_hash<Point>()(e.first) * 31 + Point_hash<Point>()(e.second);
+    }
+  };
+  // cdt's vertices, and its domain's boundary edges, directed with the
+  // domain on their left, with the face outside
+  std::unordered_map<Point, Vertex_handle, Point_hash<Point> > vertex_at;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vertex_at.emplace(v->point(), v);
+  std::unordered_map<Point_pair, std::pair<Face_handle, int>, Pair_hash> outside;
+  std::vector<Face_handle> domain_faces;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if(!f->is_in_domain()) continue;
+    domain_faces.push_back(f);
+    for(int k = 0; k < 3; ++k) {
+      const Face_handle g = f->neighbor(k);
+      if(!cdt.is_infinite(g) && g->is_in_domain()) continue;
+      outside.emplace(Point_pair(f->vertex(CDT::ccw(k))->point(), f->vertex(CDT::cw(k))->point()),
+                      std::make_pair(g, g->index(f)));
+    }
+  }
+  // the parts' open edges: each on the domain's boundary or on an interface
+  // that another part closes the other way
+  std::size_t boundary_edges = 0;
+  std::unordered_map<Point_pair, int, Pair_hash> interface_sides;
+  for(const CDT& part : parts)
+    for(auto f = part.finite_faces_begin(); f != part.finite_faces_end(); ++f) {
+      if(!f->is_in_domain()) continue;
+      for(int k = 0; k < 3; ++k) {
+        const Face_handle g = f->neighbor(k);
+        if(!part.is_infinite(g) && g->is_in_domain()) continue;
+        Point_pair e(f->vertex(CDT::ccw(k))->point(), f->vertex(CDT::cw(k))->point());
+        if(outside.count(e)) {
+          ++boundary_edges;
+          continue;
+        }
+        if(!f->is_constrained(k)) return false; // a part's domain ends at an unconstrained edge
+        Point_pair twin(e.second, e.first);
+        auto it = interface_sides.find(twin);
+        if(it != interface_sides.end()) {
+          if(--it->second == 0) interface_sides.erase(it);
+        } else if(++interface_sides[e] > 1) {
+          return false;
+        }
+      }
+    }
+  if(boundary_edges != outside.size() || !interface_sides.empty()) return false;
+
+  // the replacement
+  for(Face_handle f : domain_faces) cdt.tds().delete_face(f);
+  std::unordered_map<Point_pair, std::pair<Face_handle, int>, Pair_hash> open_interfaces;
+  std::vector<typename CDT::Edge> seams;
+  for(CDT& part : parts) {
+    // the part's vertices by address, in flat tables (node-based
+    // maps cost a third of the merge at a million triangles)
+    Flat_hash_map<const void*, Vertex_handle> vertex_of(nullptr);
+    vertex_of.reserve(part.number_of_vertices());
+    for(auto v = part.finite_vertices_begin(); v != part.finite_vertices_end(); ++v) {
+      auto it = vertex_at.find(v->point());
+      Vertex_handle w;
+      if(it != vertex_at.end()) {
+        w = it->second;
+      } else {
+        w = cdt.tds().create_vertex();
+        w->set_point(v->point());
+        made.push_back(w);
+        // an interface point: the part on the other side finds it
+        if(part.are_there_incident_constraints(v)) vertex_at.emplace(v->point(), w);
+      }
+      vertex_of.insert(&*v, w);
+    }
+    // Each in-domain face's image takes the face's neighbours, and the face
+    // keeps its image in its neighbour slot 0 (the parts are not used again),
+    // so that the images link up without a table of faces.
+    std::vector<Face_handle> images;
+    images.reserve(part.number_of_faces());
+    for(auto f = part.finite_faces_begin(); f != part.finite_faces_end(); ++f) {
+      if(!f->is_in_domain()) continue;
+      const Face_handle g = cdt.tds().create_face(*vertex_of.find(&*f->vertex(0)), *vertex_of.find(&*f->vertex(1)),
+                                                  *vertex_of.find(&*f->vertex(2)));
+      g->set_in_domain(true);
+      for(int k = 0; k < 3; ++k) {
+        g->set_constraint(k, f->is_constrained(k));
+        g->set_neighbor(k, f->neighbor(k));
+        g->vertex(k)->set_face(g);
+      }
+      f->set_neighbor(0, g);
+      images.push_back(g);
+    }
+    for(const Face_handle g : images) {
+      for(int k = 0; k < 3; ++k) {
+        const Face_handle n = g->neighbor(k); // still the part's face
+        if(!part.is_infinite(n) && n->is_in_domain()) {
+          g->set_neighbor(k, n->neighbor(0));
+          continue;
+        }
+        Point_pair e(g->vertex(CDT::ccw(k))->point(), g->vertex(CDT::cw(k))->point());
+        auto out = outside.find(e);
+        if(out != outside.end()) {
+          g->set_neighbor(k, out->second.first);
+          out->second.first->set_neighbor(out->second.second, g);
+          continue;
+        }
+        // an interface edge: joined to the other part's face, released
+        Point_pair twin(e.second, e.first);
+        auto other = open_interfaces.find(twin);
+        if(other == open_interfaces.end()) {
+          g->set_neighbor(k, Face_handle());
+          open_interfaces.emplace(e, std::make_pair(g, k));
+          continue;
+        }
+        const Face_handle h = other->second.first;
+        const int j = other->second.second;
+        g->set_neighbor(k, h);
+        h->set_neighbor(j, g);
+        g->set_constraint(k, false);
+        h->set_constraint(j, false);
+        seams.emplace_back(g, k);
+        open_interfaces.erase(other);
+      }
+    }
+    // its triangles are in cdt now: the part's memory goes back before the
+    // next part is copied (the peak is the mesh and one part, not two meshes)
+    part.clear();
+  }
+  CGAL_assertion(open_interfaces.empty());
+  lawson_flips(cdt, seams, [](Face_handle, Face_handle) {});
+  return true;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgAdvancingFrontMesh2Ref
+
+Meshes the domain of `cdt` like `advancing_front_mesh_2()`, on `threads`
+threads: the domain is cut into as many strips across its longer axis,
+each holding about the same number of triangles as the sizing field
+predicts; the constraints are split where they cross a cut, the pieces of
+the cuts inside the domain (the interfaces) are discretised to the size
+field, every part is meshed in a triangulation of its own with the frontal
+mesher, concurrently (Intel oneTBB, when `CGAL_LINKED_WITH_TBB` is defined;
+else one part after another), and the meshes are merged into `cdt`: the
+interfaces are not constraints, so the merged mesh is constrained Delaunay
+across them (the points of all parts are inserted into `cdt`, whose
+constraints are the input's).
+
+The result depends on `threads` (the cuts do), and for a given `threads`
+not on the machine or the order the parts finish in. `threads == 1`, a
+domain too small for two parts of 2,000 triangles, or a domain whose cuts
+cannot be placed (a constraint that cannot be split where it crosses a
+cut) is meshed in one piece by the serial mesher; the statistics say why.
+A cut is placed at the balanced position or up to two slices of the
+sampling grid away from it, at the first place a quarter of the local size
+clear of every vertex and crossing the constraints at 30 degrees or more
+(else at the best place found).
+
+Constraints are split to the sizing field first, as `advancing_front_mesh_2()`
+does (`split_constraints == false` keeps them, except where a cut
+crosses one); `on_split(a, b, v)` is called for every split of a
+constrained edge (a, b) at a new vertex v, by the boundary discretisation
+and by the cuts.
+
+\tparam CDT as for `Advancing_front_mesher_2`; default constructible
+\tparam Size as for `advancing_front_mesh_2()`; the sizing field is copied
+  for each part, and its copies are called from different threads at once:
+  a field whose copies share mutable state must guard it
+\returns the mesher's return code (`MESH_COMPLETE` when every part is)
+\throws std::invalid_argument as `advancing_front_mesh_2()`, and when
+  `threads == 0`
+*/
+template <class CDT, class InputIterator, class Size, class OnSplit>
+Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIterator seeds_end, const Size& size,
+                                    bool mark, std::size_t threads, Parallel_mesh_statistics& st,
+                                    bool split_constraints, OnSplit on_split)
+{
+  typedef typename CDT::Geom_traits Gt;
+  typedef typename CDT::Point Point;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef internal::Sizing_field_maker<Gt, Size> Maker;
+  typedef typename Maker::type Field;
+  typedef Advancing_front_mesher_2<CDT, Field> Mesher;
+  typedef CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> > Mesh_2_mesher;
+  if(threads == 0) throw std::invalid_argument("mesh_in_parallel_2: threads must be at least 1");
+  const double seam_width = 3;
+  const std::size_t seam_passes = 3;
+  st = Parallel_mesh_statistics();
+  st.threads = threads;
+  const Field field = Maker::make(size);
+  const std::vector<Point> seeds(seeds_begin, seeds_end);
+  const auto t_start = std::chrono::steady_clock::now();
+
+  auto in_one_piece = [&](const std::string& why) {
+    st.one_piece_reason = why;
+    st.parts = 1;
+    st.decomposition_time = internal::parallel_seconds_since(t_start);
+    const auto t_mesh = std::chrono::steady_clock::now();
+    Mesher mesher(cdt, field);
+    mesher.set_seeds(seeds.begin(), seeds.end(), mark);
+    mesher.set_constraint_splitting(false);
+    const Mesh_return_code rc = mesher.refine_mesh();
+    st.meshing_time = internal::parallel_seconds_since(t_mesh);
+    st.part_statistics.assign(1, mesher.statistics());
+    st.part_triangles.assign(1, mesher.statistics().number_of_faces);
+    return rc;
+  };
+
+  // the domain, and its boundary to the size field (as the serial mesher
+  // does it, but with the callback)
+  if(cdt.dimension() < 2) return in_one_piece("the triangulation has no faces");
+  Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
+  if(split_constraints) {
+    split_constraints_to_size_2(cdt, field, Constraint_touches_domain<CDT>{&cdt}, on_split);
+    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
+  }
+  if(threads < 2) return in_one_piece("one thread");
+  internal::Strip_plan plan = internal::plan_strips(cdt, field, threads);
+  if(plan.cuts.empty()) return in_one_piece("the domain is too small for two parts");
+
+  // the cuts: constraints split where they cross, interfaces discretised
+  std::vector<std::vector<std::vector<Point> > > chains_of_cut;
+  try {
+    std::vector<std::vector<Vertex_handle> > crossings;
+    for(const internal::Strip_cut& cut : plan.cuts) {
+      crossings.push_back(internal::cut_constraints(cdt, plan.axis, cut.position, on_split));
+      st.cut_points += crossings.back().size();
+    }
+    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
+    for(std::size_t k = 0; k < plan.cuts.size(); ++k) {
+      chains_of_cut.push_back(internal::interface_chains(cdt, field, plan.axis, crossings[k]));
+      for(const auto& chain : chains_of_cut.back()) st.interface_points += chain.size() - 2;
+    }
+  } catch(const std::runtime_error& e) {
+    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
+    return in_one_piece(std::string("a cut could not be made: ") + e.what());
+  }
+
+  // each part's constraints and free points, by the side of the cuts
+  const std::size_t parts = plan.cuts.size() + 1;
+  std::vector<std::vector<std::pair<Point, Point> > > constraints(parts);
+  for(const auto& e : internal::domain_constraints(cdt)) {
+    const Point &a = e.first->point(), &b = e.second->point();
+    const double mx = 0.5 * (CGAL::to_double(a.x()) + CGAL::to_double(b.x()));
+    const double my = 0.5 * (CGAL::to_double(a.y()) + CGAL::to_double(b.y()));
+    constraints[internal::part_of(internal::coordinate(mx, my, plan.axis), plan.cuts)].emplace_back(a, b);
+  }
+  std::vector<std::vector<Point> > free_points(parts);
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    bool in_domain = false;
+    auto f = cdt.incident_faces(v), done = f;
+    do {
+      in_domain = in_domain || (!cdt.is_infinite(f) && f->is_in_domain());
+    } while(++f != done);
+    if(!in_domain || cdt.are_there_incident_constraints(v)) continue;
+    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
+    free_points[internal::part_of(internal::coordinate(x, y, plan.axis), plan.cuts)].push_back(v->point());
+  }
+  st.parts = parts;
+  st.axis = plan.axis;
+  for(const auto& c : plan.cuts) st.cuts.push_back(c.position);
+  st.predicted_triangles = plan.estimated;
+  st.decomposition_time = internal::parallel_seconds_since(t_start);
+
+  // the parts, meshed concurrently, each with its own copy of the field
+  const auto t_mesh = std::chrono::steady_clock::now();
+  std::vector<CDT> part_cdt(parts);
+  std::vector<Mesh_return_code> codes(parts, MESH_COMPLETE);
+  st.part_statistics.assign(parts, Statistics());
+  std::vector<std::string> failures(parts);
+  auto mesh_part = [&](std::size_t i) {
+    try {
+      internal::build_part(cdt, plan, i, constraints[i], chains_of_cut, free_points[i], part_cdt[i]);
+      const Field part_field = field;
+      Mesher mesher(part_cdt[i], part_field);
+      mesher.use_domain_marks();
+      codes[i] = mesher.refine_mesh();
+      st.part_statistics[i] = mesher.statistics();
+    } catch(const std::exception& e) {
+      failures[i] = e.what();
+    }
+  };
+#if defined(__SANITIZE_THREAD__)
+  // Under ThreadSanitizer, one std::thread per part: TSan does not see
+  // oneTBB's synchronisation (Debian's libtbb is not instrumented) and
+  // reports its task hand-overs as races; with threads it checks the
+  // parts' own accesses, which are the same code.
+  std::vector<std::thread> workers;
+  for(std::size_t i = 0; i < parts; ++i) workers.emplace_back(mesh_part, i);
+  for(std::thread& w : workers) w.join();
+#elif defined(CGAL_LINKED_WITH_TBB)
+  // more threads than cores when asked (TBB limits its workers to the
+  // cores otherwise)
+  tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, threads);
+  tbb::task_arena arena{int(threads)};
+  arena.execute([&] { tbb::parallel_for(std::size_t(0), parts, mesh_part); });
+#else
+  for(std::size_t i = 0; i < parts; ++i) mesh_part(i);
+#endif
+  st.meshing_time = internal::parallel_seconds_since(t_mesh);
+  for(const std::string& f : failures)
+    if(!f.empty()) {
+      // the parts cannot be trusted; the triangulation still holds the
+      // input and the cuts
+      part_cdt.clear();
+      st.part_statistics.clear();
+      return in_one_piece("a part could not be meshed: " + f);
+    }
+
+  // the merge: the parts' triangles stitched into cdt, or, where that
+  // cannot be done, their points inserted
+  const auto t_merge = std::chrono::steady_clock::now();
+  for(std::size_t i = 0; i < parts; ++i) {
+    std::size_t faces = 0;
+    for(auto f = part_cdt[i].finite_faces_begin(); f != part_cdt[i].finite_faces_end(); ++f)
+      if(f->is_in_domain()) ++faces;
+    st.part_triangles.push_back(faces);
+  }
+  std::vector<Vertex_handle> new_vertices;
+  st.stitched = internal::stitch_parts(cdt, part_cdt, new_vertices);
+  if(!st.stitched) {
+    std::vector<Point> points;
+    for(std::size_t i = 0; i < parts; ++i)
+      for(auto v = part_cdt[i].finite_vertices_begin(); v != part_cdt[i].finite_vertices_end(); ++v)
+        points.push_back(v->point());
+    std::unordered_set<Vertex_handle, Handle_hash_function> input_vertices;
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) input_vertices.insert(v);
+    part_cdt.clear();
+    cdt.insert(points.begin(), points.end());
+    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if(!input_vertices.count(v)) new_vertices.push_back(v);
+  }
+  part_cdt.clear();
+  st.merge_time = internal::parallel_seconds_since(t_merge);
+  // The seams: where the rows of triangles grown from an interface meet
+  // those grown from the boundary, triangles are worse than where one front
+  // sweeps through. The mesher's vertices within three local sizes of a cut,
+  // the interface points among them (no longer on any constraint), are
+  // smoothed, with the flips that keep the mesh constrained Delaunay; the
+  // input's vertices (free points among them) never move. The local size
+  // is only asked near the cuts: within three times the largest size on
+  // the interfaces, twice.
+  const auto t_seams = std::chrono::steady_clock::now();
+  double interface_size = 0;
+  for(const auto& chains : chains_of_cut)
+    for(const auto& chain : chains)
+      for(const Point& p : chain) interface_size = (std::max)(interface_size, CGAL::to_double(field(p)));
+  std::vector<Vertex_handle> seam;
+  for(Vertex_handle v : new_vertices) {
+    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
+    const double a = internal::coordinate(x, y, plan.axis);
+    const std::size_t part = internal::part_of(a, plan.cuts);
+    for(std::size_t k : {part - 1, part}) {
+      if(k >= plan.cuts.size()) continue;
+      const double d = std::abs(a - plan.cuts[k].position);
+      if(d <= 2 * seam_width * interface_size && d <= seam_width * CGAL::to_double(field(v->point()))) {
+        seam.push_back(v);
+        break;
+      }
+    }
+  }
+  st.seam_vertices = seam.size();
+  st.seam_smoothing = internal::smooth_vertices_with<internal::Quality_moves>(cdt, seam, seam_passes);
+  st.seam_time = internal::parallel_seconds_since(t_seams);
+  Mesh_return_code rc = MESH_COMPLETE;
+  for(Mesh_return_code c : codes)
+    if(c != MESH_COMPLETE) rc = c;
+  return rc;
+}
+
+} // namespace Advancing_front_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_ADVANCING_FRONT_MESH_2_MESH_IN_PARALLEL_2_H
