@@ -278,9 +278,10 @@ expect_exit(0 ${CHECK} ${WORK_DIR}/sq.poly ${WORK_DIR}/sq_timed.off)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --time-limit 0 -o ${WORK_DIR}/x.off)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.03 --max-steps -3 -o ${WORK_DIR}/x.off)
 
-# streaming: the same mesh as in memory (afm_check_mesh on the streamed OFF,
-# same triangle count), all streamable formats at once
-expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.01 -o ${WORK_DIR}/incore.off -o ${WORK_DIR}/incore.vtu --stats)
+# streaming: the same mesh as in memory on one thread (afm_check_mesh on the
+# streamed OFF, same triangle count), all streamable formats at once
+expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.01 --threads 1 -o ${WORK_DIR}/incore.off -o ${WORK_DIR}/incore.vtu
+            --stats)
 string(REGEX MATCH "\"triangles\":[0-9]+" incore_triangles "${LAST_OUT}")
 expect_exit(0 ${AFMESH} ${WORK_DIR}/sq.poly --size 0.01 --stream -o ${WORK_DIR}/st.off -o ${WORK_DIR}/st.vtu
             -o ${WORK_DIR}/st.msh -o ${WORK_DIR}/st.node --stats)
@@ -425,7 +426,10 @@ expect_exit(1 ${AFMESH} --resume ${WORK_DIR}/missing.ckpt)
 # memory and streamed; --keep-segments keeps the paper's 4 triangles and says
 # why they are so large
 file(WRITE ${WORK_DIR}/unit.poly "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 1\n1 1 2 7\n2 2 3 7\n3 3 4 7\n4 4 1 7\n0\n")
-expect_exit(0 ${AFMESH} ${WORK_DIR}/unit.poly --size 0.01 -o ${WORK_DIR}/unit.off -o ${WORK_DIR}/unit.node --stats)
+# (on one thread: the streamed run below meshes on one, and a cut would
+# split two more edges)
+expect_exit(0 ${AFMESH} ${WORK_DIR}/unit.poly --size 0.01 --threads 1 -o ${WORK_DIR}/unit.off -o ${WORK_DIR}/unit.node
+            --stats)
 string(JSON unit_triangles GET "${LAST_OUT}" triangles)
 string(JSON unit_within GET "${LAST_OUT}" quality share_edges_within_sqrt2)
 string(JSON unit_mean GET "${LAST_OUT}" quality mean_radius_ratio)
@@ -492,5 +496,43 @@ expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 0 -o ${WO
 expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 31 -o ${WORK_DIR}/x.off)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle nan -o ${WORK_DIR}/x.off)
 expect_exit(2 ${AFMESH} ${WORK_DIR}/wedge.poly --size 0.05 --min-angle 30 --stream -o ${WORK_DIR}/x.off)
+
+# --threads 2: a unit square whose sides are marked 7, cut into two parts
+# meshed at once; the merged mesh is valid, the cut's split sides keep
+# their marker (no boundary edge gets Triangle's default 1), two runs give
+# the same files, and the statistics name the parts. --threads 1 is the
+# serial mesher; bad counts and what needs one thread are refused.
+file(WRITE ${WORK_DIR}/marked.poly "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 1\n1 1 2 7\n2 2 3 7\n3 3 4 7\n4 4 1 7\n0\n")
+foreach(run a b)
+  expect_exit(0 ${AFMESH} ${WORK_DIR}/marked.poly --size 0.01 --threads 2 -o ${WORK_DIR}/marked_${run}.off
+              -o ${WORK_DIR}/marked_${run}.node --stats)
+endforeach()
+string(JSON par_threads GET "${LAST_OUT}" parallel threads)
+string(JSON par_parts GET "${LAST_OUT}" parallel parts)
+string(JSON par_cut_points GET "${LAST_OUT}" parallel cut_points)
+if(NOT par_threads EQUAL 2 OR NOT par_parts EQUAL 2 OR NOT par_cut_points EQUAL 2)
+  message(FATAL_ERROR "--threads 2: ${LAST_OUT}")
+endif()
+expect_exit(0 ${CHECK} ${WORK_DIR}/marked.poly ${WORK_DIR}/marked_a.off)
+file(SHA256 ${WORK_DIR}/marked_a.off marked_a_hash)
+file(SHA256 ${WORK_DIR}/marked_b.off marked_b_hash)
+if(NOT marked_a_hash STREQUAL marked_b_hash)
+  message(FATAL_ERROR "--threads 2: two runs wrote different meshes")
+endif()
+file(STRINGS ${WORK_DIR}/marked_a.edge marked_default REGEX "^ *[0-9]+ +[0-9]+ +[0-9]+ +1$")
+file(STRINGS ${WORK_DIR}/marked_a.edge marked_seven REGEX " 7$")
+list(LENGTH marked_seven marked_seven_count)
+if(marked_default OR marked_seven_count LESS 400)
+  message(FATAL_ERROR "--threads 2: ${marked_seven_count} edges marked 7; unmarked: ${marked_default}")
+endif()
+expect_exit(0 ${AFMESH} ${WORK_DIR}/marked.poly --size 0.01 --threads 1 -o ${WORK_DIR}/marked_1.off --stats)
+string(JSON par_parts GET "${LAST_OUT}" parallel parts)
+if(NOT par_parts EQUAL 1)
+  message(FATAL_ERROR "--threads 1: ${LAST_OUT}")
+endif()
+expect_exit(2 ${AFMESH} ${WORK_DIR}/marked.poly --size 0.01 --threads 0 -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/marked.poly --size 0.01 --threads -2 -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/marked.poly --size 0.01 --threads 2 --stream -o ${WORK_DIR}/x.off)
+expect_exit(2 ${AFMESH} ${WORK_DIR}/marked.poly --size 0.01 --threads 2 --keep-segments -o ${WORK_DIR}/x.off)
 
 message(STATUS "afmesh_2 command-line interface: all checks passed")

@@ -33,6 +33,7 @@
 #include <iterator>
 #include <list>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,7 +79,9 @@ struct Cli_sizing_field
 {
   typedef AFM::Region_sizing_field_2<typename Types<K>::CDT, Cli_base_sizing_field<K> > Region_field;
   Cli_base_sizing_field<K> base;
-  std::shared_ptr<const Region_field> regions;
+  // held by value: a copy of the region field shares its regions but has
+  // its own locate hint, so each thread of --threads evaluates its own copy
+  std::optional<Region_field> regions;
   typename K::FT operator()(const typename K::Point_2& p) const { return regions ? (*regions)(p) : base(p); }
 };
 
@@ -198,8 +201,7 @@ template <class K>
 void limit_size_in_regions(Input<K>& in)
 {
   if(in.tags.has_area_limits())
-    in.sizing.regions =
-      std::make_shared<typename Cli_sizing_field<K>::Region_field>(in.cdt, in.tags, in.sizing.base);
+    in.sizing.regions.emplace(in.cdt, in.tags, in.sizing.base);
 }
 
 // --size alone: uniform; otherwise the background field of the boundary

@@ -11,6 +11,7 @@
 #include <CGAL/Advancing_front_mesh_2/IO/Streaming_mesh_writer.h>
 #include <CGAL/Advancing_front_mesh_2/IO/Streaming_tagging_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
+#include <CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h>
 #include <CGAL/Advancing_front_mesh_2/quality_smooth_mesh_2.h>
 #include <CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h>
 
@@ -154,6 +155,20 @@ bool run_mesher(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_code& rc
               << " reached: the rest of the front was closed on existing points (valid, coarser there)\n";
   mesher.visitor().done();
   return true;
+}
+
+// --threads N above 1: the domain in N parts meshed at once and merged
+// (mesh_in_parallel_2); the markers follow the segments the cuts split.
+// The boundary was split (or kept) by load_input(), with the markers.
+template <class K>
+AFM::Mesh_return_code mesh_in_parts(const Options& opt, Input<K>& in, AFM::Parallel_mesh_statistics& parallel)
+{
+  typedef typename Types<K>::CDT CDT;
+  auto on_split = [&in](typename CDT::Vertex_handle a, typename CDT::Vertex_handle b, typename CDT::Vertex_handle v) {
+    in.tags.split_constraint(a, b, v);
+  };
+  return AFM::mesh_in_parallel_2(in.cdt, in.seeds.begin(), in.seeds.end(), in.sizing, false, opt.threads, parallel,
+                                 false, on_split);
 }
 
 // --smooth N with the --smoother: the mesher's points move, the input's

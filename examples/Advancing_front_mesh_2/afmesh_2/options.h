@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <iostream>
+#include <thread>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -51,6 +52,7 @@ struct Options
   bool no_pocket_priority = false;
   bool keep_segments = false; // --keep-segments: no boundary discretisation, as Triangle's -Y
   double min_angle = 0;       // --min-angle A in degrees, 0: off
+  std::size_t threads = 1;    // --threads N, resolved: the parts meshed at once (1: the serial mesher)
   double time_limit = 0;     // seconds of meshing, 0: none
   std::size_t max_steps = 0; // front edges processed, 0: none
   std::size_t smooth = 0;
@@ -72,7 +74,7 @@ struct Options
 struct Command_line
 {
   Options opt;
-  long long smooth = 0, max_steps = 0;
+  long long smooth = 0, max_steps = 0, threads = 0;
   std::vector<std::string> checkpoint; // --checkpoint-every K FILE
   std::vector<std::string> svg_window; // --svg-window X0 Y0 X1 Y1
   po::variables_map vm;
@@ -145,6 +147,10 @@ inline po::options_description visible_options(Command_line& c)
      "A: after meshing (and smoothing), raise the smallest angle to A degrees (0 < A <= 30) by local "
      "Delaunay refinement of the few triangles below it (Mesh_2's, with segment splitting unless "
      "--keep-segments); triangles at input angles below about 60 degrees may stay below (see the manual)")
+    ("threads", po::value<long long>(&c.threads),
+     "N: cut the domain into N strips of about equal triangle counts and mesh them at once on N threads, "
+     "then merge them (constrained Delaunay across the cuts); 1: the serial mesher; default: every core. "
+     "--stream, --checkpoint-every, --resume, --time-limit, --max-steps and --keep-segments mesh on one thread")
     ("no-pocket-priority", po::bool_switch(&opt.no_pocket_priority),
      "mesh the front's pockets in shortest-first order too: a little better quality "
      "where patches meet, a front up to 4 times larger")
@@ -298,6 +304,28 @@ inline void parse_svg_window(const std::vector<std::string>& values, Options& op
     throw Usage_error("--svg-window X0 Y0 X1 Y1 needs X0 < X1 and Y0 < Y1");
 }
 
+// --threads: given, at least 1 and not with what needs one thread (one
+// mesher whose state is streamed, checkpointed or limited; every segment
+// kept, which the cuts would split); not given, every core where possible.
+inline void resolve_threads(Command_line& c)
+{
+  Options& opt = c.opt;
+  const bool given = c.vm.count("threads") > 0;
+  if(given && (c.threads < 1 || c.threads > 4096))
+    throw Usage_error("--threads must be a number of threads from 1 to 4096");
+  const char* serial_only = opt.stream                   ? "--stream"
+                            : opt.checkpoint_every > 0   ? "--checkpoint-every"
+                            : opt.time_limit > 0         ? "--time-limit"
+                            : opt.max_steps > 0          ? "--max-steps"
+                            : opt.keep_segments          ? "--keep-segments"
+                                                         : nullptr;
+  if(given && c.threads > 1 && serial_only != nullptr)
+    throw Usage_error(std::string("--threads above 1 cannot be combined with ") + serial_only +
+                      " (it meshes on one thread)");
+  if(given) opt.threads = std::size_t(c.threads);
+  else opt.threads = serial_only != nullptr ? 1 : (std::max)(1u, std::thread::hardware_concurrency());
+}
+
 // The options of a new run (not --resume), checked and completed.
 inline void check_new_run(Command_line& c)
 {
@@ -335,6 +363,7 @@ inline void check_new_run(Command_line& c)
   if(opt.stop_after_checkpoint && opt.checkpoint_every == 0)
     throw Usage_error("--stop-after-checkpoint needs --checkpoint-every");
   check_streaming(opt);
+  resolve_threads(c);
 }
 
 // in resume.h

@@ -10,6 +10,7 @@
 #include <CGAL/Advancing_front_mesh_2/Mesh_return_code.h>
 #include <CGAL/Advancing_front_mesh_2/Statistics.h>
 #include <CGAL/Advancing_front_mesh_2/laplacian_smooth_mesh_2.h>
+#include <CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h>
 
 #include <nlohmann/json.hpp>
 
@@ -64,7 +65,8 @@ inline void print_streamed_report(const Options& opt, const AFM::Statistics& st,
 
 inline void print_report(const Options& opt, const AFM::Statistics& st, const AFM::Mesh_quality& unsmoothed,
                          const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t,
-                         const std::string& boundary, const AFM::Minimum_angle_statistics& angle)
+                         const std::string& boundary, const AFM::Minimum_angle_statistics& angle,
+                         const AFM::Parallel_mesh_statistics* parallel = nullptr)
 {
   std::ostringstream os;
   os << std::setprecision(4);
@@ -91,6 +93,19 @@ inline void print_report(const Options& opt, const AFM::Statistics& st, const AF
   if(opt.smooth > 0 || opt.min_angle > 0) line(opt.smooth > 0 ? "before smoothing, " : "before refinement, ", unsmoothed);
   line("", q);
   os << "  " << boundary << "\n";
+  if(parallel != nullptr) {
+    os << "  threads: " << parallel->threads << ", ";
+    if(parallel->parts == 1) {
+      os << "meshed in one piece (" << parallel->one_piece_reason << ")\n";
+    } else {
+      os << parallel->parts << " parts cut at " << (parallel->axis == 0 ? "x =" : "y =");
+      for(double c : parallel->cuts) os << " " << c;
+      os << " (" << parallel->cut_points << " cut points, " << parallel->interface_points << " interface points); "
+         << "cutting " << parallel->decomposition_time << " s, parts " << parallel->meshing_time << " s, merge "
+         << parallel->merge_time << " s, seams " << parallel->seam_time << " s (" << parallel->seam_vertices
+         << " vertices, " << parallel->seam_smoothing.moves << " moves)\n";
+    }
+  }
   print_report_text(opt, os.str());
 }
 
@@ -220,10 +235,33 @@ Json boundary_discretisation_json(const Options& opt, const Input<K>& in)
               {"longest_kept_segment_in_sizes", in.longest_kept_segment_in_sizes}};
 }
 
+// --threads: the parts and where the time went (threads 1: the serial mesher)
+inline Json parallel_json(const Options& opt, const AFM::Parallel_mesh_statistics* p)
+{
+  if(p == nullptr) return Json{{"threads", opt.threads}, {"parts", 1}};
+  Json j{{"threads", p->threads},
+         {"parts", p->parts},
+         {"cut_axis", p->axis == 0 ? "x" : "y"},
+         {"cuts", p->cuts},
+         {"predicted_triangles", p->predicted_triangles},
+         {"part_triangles", p->part_triangles},
+         {"cut_points", p->cut_points},
+         {"interface_points", p->interface_points},
+         {"seam_vertices", p->seam_vertices},
+         {"seam_moves", p->seam_smoothing.moves},
+         {"time", Json{{"cutting", number(p->decomposition_time)},
+                       {"parts", number(p->meshing_time)},
+                       {"merge", number(p->merge_time)},
+                       {"seams", number(p->seam_time)}}}};
+  if(!p->one_piece_reason.empty()) j["one_piece_reason"] = p->one_piece_reason;
+  return j;
+}
+
 template <class K>
 Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_code rc, const AFM::Statistics& st,
                      const AFM::Mesh_quality& q, const AFM::Smoothing_statistics& smoothing, const Run_times& t,
-                     const AFM::Minimum_angle_statistics& angle)
+                     const AFM::Minimum_angle_statistics& angle,
+                     const AFM::Parallel_mesh_statistics* parallel = nullptr)
 {
   Json j;
   j["input"] = opt.input;
@@ -259,6 +297,7 @@ Json statistics_json(const Options& opt, const Input<K>& in, AFM::Mesh_return_co
                         {"triangles_changed", angle.triangles_changed},
                         {"below_after", angle.below_after},
                         {"completed", angle.completed}};
+  j["parallel"] = parallel_json(opt, parallel);
   return j;
 }
 

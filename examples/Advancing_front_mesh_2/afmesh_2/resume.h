@@ -149,6 +149,7 @@ inline Options resumed_run_options(const Command_line& now)
     throw Input_error(opt.resume + ": the stored options are not valid: " + e.what());
   }
   resumed.resume = opt.resume;
+  resumed.threads = 1; // a checkpointed run is streamed, on one thread
   resumed.stats = opt.stats;
   resumed.report = opt.report;
   resumed.stop_after_checkpoint = opt.stop_after_checkpoint;

@@ -42,8 +42,9 @@ int finish_streamed_run(const Options& opt, Mesher<K>& mesher, AFM::Mesh_return_
 
 // A run in memory: smoothing, outputs, quality figures.
 template <class K>
-int finish_run_in_memory(const Options& opt, Input<K>& in, const Mesher<K>& mesher, AFM::Mesh_return_code rc,
-                         Run_times t, std::chrono::steady_clock::time_point t_start)
+int finish_run_in_memory(const Options& opt, Input<K>& in, const AFM::Statistics& st, AFM::Mesh_return_code rc,
+                         Run_times t, std::chrono::steady_clock::time_point t_start,
+                         const AFM::Parallel_mesh_statistics* parallel = nullptr)
 {
   const bool want_quality = opt.stats || opt.report || !opt.histogram.empty();
   AFM::Mesh_quality unsmoothed;
@@ -59,11 +60,31 @@ int finish_run_in_memory(const Options& opt, Input<K>& in, const Mesher<K>& mesh
   const auto t_write = std::chrono::steady_clock::now();
   if(!write_outputs(opt, in.cdt, in.tags, q)) return 3;
   t.writing = seconds_since(t_write);
-  const AFM::Statistics& st = mesher.statistics();
-  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t, boundary_summary(opt, in), angle);
+  if(opt.report) print_report(opt, st, unsmoothed, q, smoothing, t, boundary_summary(opt, in), angle, parallel);
   t.total = seconds_since(t_start);
-  if(opt.stats) print_statistics(statistics_json(opt, in, rc, st, q, smoothing, t, angle));
+  if(opt.stats) print_statistics(statistics_json(opt, in, rc, st, q, smoothing, t, angle, parallel));
   return 0;
+}
+
+// --threads N above 1: the parts meshed at once (mesh_in_parts()), then
+// the run in memory as on one thread.
+template <class K>
+int run_in_parallel(const Options& opt, Input<K>& in, std::chrono::steady_clock::time_point t_start)
+{
+  const auto t_mesh = std::chrono::steady_clock::now();
+  AFM::Parallel_mesh_statistics parallel;
+  const AFM::Mesh_return_code rc = mesh_in_parts<K>(opt, in, parallel);
+  Run_times t;
+  t.meshing = seconds_since(t_mesh);
+  // the counters of every part's mesher, and the merged mesh's size
+  AFM::Statistics st = AFM::sum_of(parallel.part_statistics);
+  st.number_of_vertices = in.cdt.number_of_vertices();
+  st.number_of_faces = 0;
+  for(auto f = in.cdt.finite_faces_begin(); f != in.cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain()) ++st.number_of_faces;
+  if(st.number_of_faces == 0)
+    throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
+  return finish_run_in_memory<K>(opt, in, st, rc, t, t_start, &parallel);
 }
 
 template <class K>
@@ -72,6 +93,7 @@ int run(const Options& opt)
   const auto t_start = std::chrono::steady_clock::now();
   Input<K> in;
   load_input(opt, in);
+  if(opt.threads > 1) return run_in_parallel<K>(opt, in, t_start);
   Progress_visitor progress;
   progress.enabled = isatty(2) != 0;
   // a resumed run meshes in an empty triangulation: the state comes from
@@ -90,7 +112,7 @@ int run(const Options& opt)
   if(rc != AFM::STOPPED_AT_CHECKPOINT && st.number_of_faces == 0)
     throw Input_error(opt.input + ": nothing to mesh: no bounded region is left once the holes are removed");
   if(opt.stream) return finish_streamed_run<K>(opt, mesher, rc, sink.get(), t.meshing, t_start);
-  return finish_run_in_memory<K>(opt, in, mesher, rc, t, t_start);
+  return finish_run_in_memory<K>(opt, in, mesher.statistics(), rc, t, t_start);
 }
 
 } // namespace afmesh_2

@@ -17,12 +17,14 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace py = pybind11;
@@ -152,7 +154,12 @@ py::dict mesh_with(const AFM::IO::Poly_data& data, const Request& request)
   AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
   {
     py::gil_scoped_release free_python;
-    run_mesher<K>(opt, mesher, rc);
+    if(opt.threads > 1) {
+      AFM::Parallel_mesh_statistics parallel;
+      rc = mesh_in_parts<K>(opt, in, parallel);
+    } else {
+      run_mesher<K>(opt, mesher, rc);
+    }
     smooth(opt, in);
     raise_minimum_angle(opt, in);
   }
@@ -189,7 +196,7 @@ py::dict mesh(const py::object& vertices, const py::object& segments, const py::
               const py::object& regions, const py::object& vertex_markers, const py::object& segment_markers,
               const py::object& size, const py::object& sources, const py::object& max_size, const py::object& grading,
               const std::string& boundary_spacing, std::size_t smooth, const std::string& smoother,
-              const std::string& kernel, bool keep_segments, double min_angle)
+              const std::string& kernel, bool keep_segments, double min_angle, long long threads)
 {
   const AFM::IO::Poly_data data = poly_data(vertices, segments, holes, regions, vertex_markers, segment_markers);
   Request r;
@@ -199,6 +206,11 @@ py::dict mesh(const py::object& vertices, const py::object& segments, const py::
   if(min_angle != 0 && !(min_angle > 0 && min_angle <= 30))
     throw py::value_error("min_angle must be an angle in degrees above 0 and at most 30, or 0 for none");
   opt.min_angle = min_angle;
+  // as afmesh_2 --threads: 0 (None) is every core, and segments kept mesh on one
+  if(threads < 0 || threads > 4096) throw py::value_error("threads must be a number from 1 to 4096, or None");
+  if(threads > 1 && keep_segments) throw py::value_error("threads above 1 cannot be combined with keep_segments");
+  opt.threads = threads > 0 ? std::size_t(threads)
+                : keep_segments ? 1 : std::max<std::size_t>(1, std::thread::hardware_concurrency());
   if(!size.is_none() && PyCallable_Check(size.ptr())) {
     r.size_function = size;
   } else if(!size.is_none()) {
@@ -251,7 +263,7 @@ PYBIND11_MODULE(_afmesh_2, m)
         py::arg("segment_markers") = py::none(), py::arg("size") = py::none(), py::arg("sources") = py::none(),
         py::arg("max_size") = py::none(), py::arg("grading") = 0.2, py::arg("boundary_spacing") = "grow",
         py::arg("smooth") = 0, py::arg("smoother") = "quality", py::arg("kernel") = "epick",
-        py::arg("keep_segments") = false, py::arg("min_angle") = 0.0,
+        py::arg("keep_segments") = false, py::arg("min_angle") = 0.0, py::arg("threads") = 0,
         "Meshes the domain of a planar straight-line graph; see afmesh_2.mesh().");
   m.attr("__version__") = CGAL_ADVANCING_FRONT_MESH_2_VERSION_STR;
 }

@@ -168,7 +168,8 @@ def test_boundary_discretisation():
     with open(path, "w") as f:
         f.write("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
     v, s, h, _, _, _ = read_poly(path)
-    m = afmesh_2.mesh(v, s, h, size=0.02)
+    # on one thread: a cut would split two more sides (test_threads meshes in parts)
+    m = afmesh_2.mesh(v, s, h, size=0.02, threads=1)
     check_valid(path, m, "unit_square")
     assert 5000 < len(m.triangles) < 6500
     # 4 sides of 50 pieces: 200 boundary segments
@@ -178,7 +179,7 @@ def test_boundary_discretisation():
     assert len(kept.triangles) == 4 and len(kept.segments) == 4
     # the same as the tool writes
     base = os.path.join(WORK, "unit_square_cli")
-    run(AFMESH, path, "--size", "0.02", "-o", base + ".node")
+    run(AFMESH, path, "--size", "0.02", "--threads", "1", "-o", base + ".node")
     points, triangles = read_node_ele(base)
     assert np.array_equal(m.points, points) and np.array_equal(m.triangles, triangles)
 
@@ -291,3 +292,22 @@ def test_example_channel_with_inclusion():
     # the channel, given by its corners, is split to the size: about 0.06 on
     # the walls far from the inclusion
     assert np.count_nonzero(marker == 1) >= 15 and np.count_nonzero(marker == 3) >= 2 * 60
+
+
+@pytest.mark.parametrize("threads", [1, 2, 3])
+def test_threads(airfoil, threads):
+    """threads=N as afmesh_2 --threads N: the same mesh, valid; bad counts and threads with
+    keep_segments are a ValueError."""
+    v, s, h, _, _, _ = read_poly(airfoil)
+    m = afmesh_2.mesh(v, s, h, size=0.02, threads=threads)
+    check_valid(airfoil, m, "airfoil_threads_%d" % threads)
+    base = os.path.join(WORK, "cli_threads_%d" % threads)
+    run(AFMESH, airfoil, "--size", "0.02", "--threads", str(threads), "-o", base + ".node")
+    points, triangles = read_node_ele(base)
+    assert np.array_equal(m.points, points)
+    assert np.array_equal(m.triangles, triangles)
+    for bad in (-1, 5000):
+        with pytest.raises(ValueError):
+            afmesh_2.mesh(v, s, h, size=0.02, threads=bad)
+    with pytest.raises(ValueError):
+        afmesh_2.mesh(v, s, h, size=0.02, threads=2, keep_segments=True)

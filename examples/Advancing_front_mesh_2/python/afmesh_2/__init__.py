@@ -86,7 +86,7 @@ def grid_size(xs, ys, h):
 
 def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=None, segment_markers=None,
          size=None, sources=None, max_size=None, grading=0.2, boundary_spacing="grow", smooth=0,
-         smoother="quality", kernel="epick", keep_segments=False, min_angle=0.0):
+         smoother="quality", kernel="epick", keep_segments=False, min_angle=0.0, threads=None):
     """Meshes the domain bounded by `segments`.
 
     vertices: (n, 2) coordinates; segments: (m, 2) 0-based indices into vertices;
@@ -111,6 +111,10 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
     the smoother ('quality' or 'laplacian'); min_angle=A (0 < A <= 30) then
     raises the smallest angle to A degrees by local Delaunay refinement, as
     afmesh_2 --min-angle; kernel: 'epick', 'epeck' or 'exact-rational'.
+    threads=N meshes N strips of the domain at once and merges them, as
+    afmesh_2 --threads N (1: the serial mesher; None: every core, or one
+    with keep_segments); the mesh depends on N, and for a given N not on
+    the machine.
 
     Invalid input raises ValueError (InputError for a graph that cannot be
     meshed, with the message of the afmesh_2 tool). The GIL is released while
@@ -122,4 +126,4 @@ def mesh(vertices, segments=None, holes=None, *, regions=None, vertex_markers=No
         size = grid_size(*size)
     return Mesh(**_mesh(vertices, segments, holes, regions, vertex_markers, segment_markers, size, sources,
                         max_size, grading, boundary_spacing, smooth, smoother, kernel,
-                        keep_segments, float(min_angle)))
+                        keep_segments, float(min_angle), 0 if threads is None else int(threads)))
