@@ -9,6 +9,8 @@
 //             tagged-regions (three regions, markers, area limits)
 //   SPACING: boundary spacing of square-with-hole (default 0.01), so that
 //            a uniform mesh of size SPACING fits its boundary
+//   afm_make_input from-jigsaw OUT.poly IN.msh: a MESH2D / JIGSAW geometry
+//            (closed loops, nested ones holes) as .poly
 //
 //   afm_make_input HARD-INPUT OUT.poly N
 //   the inputs that once made the mesher slow or too fine (afm_hard_inputs.h):
@@ -19,6 +21,7 @@
 //   spacing 2^-8), tiny-holes (N holes), box-with-fine-bottom (N points)
 #include "afm_geometries.h"
 #include "afm_hard_inputs.h"
+#include "afm_shared_data.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
 
@@ -48,6 +51,24 @@ int main(int argc, char* argv[])
 {
   const std::string name = argc > 1 ? argv[1] : "multi-element-airfoil";
   const std::string out = argc > 2 ? argv[2] : name + ".poly";
+  if(name == "from-jigsaw") {
+    // a MESH2D / JIGSAW .msh geometry (closed loops; nested ones are holes)
+    // as .poly, for meshers that read only .poly (the benchmarks' Triangle)
+    if(argc != 4) {
+      std::cerr << "afm_make_input: from-jigsaw needs OUT.poly and the .msh file\n";
+      return EXIT_FAILURE;
+    }
+    try {
+      const CGAL::Advancing_front_mesh_2::IO::Poly_data pd = afm_shared_data::mesh2d_jigsaw(argv[3]);
+      CGAL::Advancing_front_mesh_2::IO::write_poly(out, pd);
+      std::cout << "wrote " << out << ": " << pd.points.size() << " points, " << pd.segments.size()
+                << " segments, " << pd.holes.size() << " holes\n";
+    } catch(const std::exception& e) {
+      std::cerr << "afm_make_input: " << e.what() << "\n";
+      return EXIT_FAILURE;
+    }
+    return EXIT_SUCCESS;
+  }
   CGAL::Advancing_front_mesh_2::IO::Poly_data hard;
   const double n = argc > 3 ? std::atof(argv[3]) : 1000;
   if(!(n >= 0 && n <= 1e7)) {
