@@ -38,13 +38,14 @@ struct Parallel_result
 // is_valid(), the independent checker (segments may be split, by the
 // boundary discretisation and the cuts), and that every part was meshed.
 template <class Size>
-Parallel_result mesh_parallel(const Poly_data& in, const Size& size, std::size_t threads, const std::string& label)
+Parallel_result mesh_parallel(const Poly_data& in, const Size& size, std::size_t threads, const std::string& label,
+                              bool split_constraints = true)
 {
   CDT cdt;
   afm_test::build_cdt(cdt, in);
   const auto seeds = afm_test::seeds_of<CDT>(in);
   Parallel_result r;
-  r.rc = AFM::mesh_in_parallel_2(cdt, seeds.begin(), seeds.end(), size, false, threads, r.st, true,
+  r.rc = AFM::mesh_in_parallel_2(cdt, seeds.begin(), seeds.end(), size, false, threads, r.st, split_constraints,
                                  AFM::internal::No_split_callback());
   AFM_CHECK_MSG(cdt.is_valid(), label << ": CGAL's is_valid() failed");
   r.mesh = afm_test::extract_mesh(cdt);
@@ -207,4 +208,21 @@ AFM_TEST_CASE(test_parallel_catalogue)
               << (r.st.parts == 1 ? " (" + r.st.one_piece_reason + ")" : std::string()) << ", "
               << r.report.summary() << "\n";
   }
+}
+
+// Segments that cross several cuts (a 3 x 1 rectangle by its corners, its
+// segments kept, 3 threads): each cut finds the pieces the previous cuts
+// left, so both long sides are split at both cuts and the parts fit
+// together (found by review: with the domain marked only after all cuts,
+// the second cut missed the pieces beside the first one's splits).
+AFM_TEST_CASE(test_parallel_segments_across_several_cuts)
+{
+  Poly_data in;
+  in.points = {{{0, 0}}, {{3, 0}}, {{3, 1}}, {{0, 1}}};
+  in.segments = {{{0, 1}}, {{1, 2}}, {{2, 3}}, {{3, 0}}};
+  const AFM::Uniform_sizing_field_2<Epick> size(0.03);
+  const Parallel_result r = mesh_parallel(in, size, 3, "3 x 1 rectangle, segments kept", false);
+  AFM_CHECK_MSG(r.st.parts == 3, r.st.one_piece_reason);
+  AFM_CHECK_MSG(r.st.cut_points == 4, r.st.cut_points << " cut points");
+  AFM_CHECK(r.st.stitched);
 }

@@ -168,7 +168,7 @@ AFM::Mesh_return_code mesh_in_parts(const Options& opt, Input<K>& in, AFM::Paral
     in.tags.split_constraint(a, b, v);
   };
   return AFM::mesh_in_parallel_2(in.cdt, in.seeds.begin(), in.seeds.end(), in.sizing, false, opt.threads, parallel,
-                                 false, on_split);
+                                 false, on_split, !opt.no_pocket_priority);
 }
 
 // --smooth N with the --smoother: the mesher's points move, the input's

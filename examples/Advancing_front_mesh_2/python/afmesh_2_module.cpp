@@ -207,7 +207,8 @@ py::dict mesh(const py::object& vertices, const py::object& segments, const py::
     throw py::value_error("min_angle must be an angle in degrees above 0 and at most 30, or 0 for none");
   opt.min_angle = min_angle;
   // as afmesh_2 --threads: 0 (None) is every core, and segments kept mesh on one
-  if(threads < 0 || threads > 4096) throw py::value_error("threads must be a number from 1 to 4096, or None");
+  if(threads < 0 || threads > 4096)
+    throw py::value_error("threads must be a number from 1 to 4096, or None (0 also means every core)");
   if(threads > 1 && keep_segments) throw py::value_error("threads above 1 cannot be combined with keep_segments");
   opt.threads = threads > 0 ? std::size_t(threads)
                 : keep_segments ? 1 : std::max<std::size_t>(1, std::thread::hardware_concurrency());

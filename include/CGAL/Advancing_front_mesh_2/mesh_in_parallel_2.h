@@ -66,9 +66,8 @@ struct Parallel_mesh_statistics
   std::size_t cut_points = 0, interface_points = 0;
   /// why the domain was meshed in one piece, when it was (empty otherwise)
   std::string one_piece_reason;
-  /// whether the parts' triangles were stitched into the triangulation (else
-  /// their points were inserted into it, a slower merge with the same result
-  /// up to cocircular points)
+  /// whether the parts' triangles were stitched into the triangulation
+  /// (false: meshed in one piece)
   bool stitched = false;
   /// the vertices near the cuts that were smoothed, and what the smoothing did
   std::size_t seam_vertices = 0;
@@ -191,7 +190,19 @@ void build_part(const CDT& cdt, const internal::Strip_plan& plan, std::size_t pa
     typename CDT::Locate_type lt;
     int li;
     const Face_handle g = cdt.locate(Point(gx, gy), lt, li);
-    if(lt != CDT::FACE || cdt.is_infinite(g) || !g->is_in_domain()) continue;
+    // on an edge or a vertex of cdt (symmetric inputs): in the domain when
+    // a face there is (the region lies on one side of every constraint)
+    bool inside = lt == CDT::FACE && !cdt.is_infinite(g) && g->is_in_domain();
+    if(lt == CDT::EDGE) {
+      inside = (!cdt.is_infinite(g) && g->is_in_domain()) ||
+               (!cdt.is_infinite(g->neighbor(li)) && g->neighbor(li)->is_in_domain());
+    } else if(lt == CDT::VERTEX) {
+      auto fc = cdt.incident_faces(g->vertex(li)), done = fc;
+      do {
+        inside = inside || (!cdt.is_infinite(fc) && fc->is_in_domain());
+      } while(++fc != done);
+    }
+    if(!inside) continue;
     for(Face_handle f : region) f->set_in_domain(true);
   }
 }
@@ -215,7 +226,8 @@ struct Point_hash
 // constrained); Lawson's flips from the interface edges then make the mesh
 // constrained Delaunay across them. Everything is matched before anything
 // changes: false (and `cdt` and the parts as they were) when a part's
-// boundary does not fit (the caller inserts the points instead). Each part
+// boundary does not fit, or a free point of the domain is in no part's
+// triangles (the caller meshes in one piece instead). Each part
 // is cleared once its triangles are copied. The vertices made are appended
 // to `made`.
 template <class CDT>
@@ -274,6 +286,27 @@ bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::V
       }
     }
   if(boundary_edges != outside.size() || !interface_sides.empty()) return false;
+  // the vertices of the domain on no constraint (free points) are in the
+  // triangles of a part: the boundary edges alone do not show a free point
+  // left outside its part's domain (it could lie within rounding of a cut)
+  for(Face_handle f : domain_faces)
+    for(int k = 0; k < 3; ++k) {
+      const Vertex_handle v = f->vertex(k);
+      if(cdt.are_there_incident_constraints(v)) continue;
+      bool found = false;
+      for(const CDT& part : parts) {
+        typename CDT::Locate_type lt;
+        int li;
+        const Face_handle g = part.locate(v->point(), lt, li);
+        if(lt != CDT::VERTEX) continue;
+        auto fc = part.incident_faces(g->vertex(li)), done = fc;
+        do {
+          found = found || (!part.is_infinite(fc) && fc->is_in_domain());
+        } while(++fc != done);
+        if(found) break;
+      }
+      if(!found) return false;
+    }
 
   // the replacement
   for(Face_handle f : domain_faces) cdt.tds().delete_face(f);
@@ -369,20 +402,22 @@ predicts; the constraints are split where they cross a cut, the pieces of
 the cuts inside the domain (the interfaces) are discretised to the size
 field, every part is meshed in a triangulation of its own with the frontal
 mesher, concurrently (Intel oneTBB, when `CGAL_LINKED_WITH_TBB` is defined;
-else one part after another), and the meshes are merged into `cdt`: the
-interfaces are not constraints, so the merged mesh is constrained Delaunay
-across them (the points of all parts are inserted into `cdt`, whose
-constraints are the input's).
+else one part after another), and the parts' triangles are stitched into
+`cdt`: the interfaces are released (not constraints) and Lawson's flips make
+the mesh constrained Delaunay across them; the mesher's vertices within
+three local sizes of a cut are then smoothed (the seams).
 
 The result depends on `threads` (the cuts do), and for a given `threads`
 not on the machine or the order the parts finish in. `threads == 1`, a
-domain too small for two parts of 2,000 triangles, or a domain whose cuts
-cannot be placed (a constraint that cannot be split where it crosses a
-cut) is meshed in one piece by the serial mesher; the statistics say why.
-A cut is placed at the balanced position or up to two slices of the
-sampling grid away from it, at the first place a quarter of the local size
-clear of every vertex and crossing the constraints at 30 degrees or more
-(else at the best place found).
+domain too small for two parts of 2,000 triangles, a domain whose cuts
+cannot be made (a constraint that cannot be split where it crosses a cut),
+or parts that do not fit together (checked before `cdt` changes) are meshed
+in one piece by the serial mesher; the statistics say why. A cut is placed
+at the balanced position or, within 3% of the extent and 4% of a part's
+predicted count, at the nearest place half a local size clear of every
+vertex not on it and crossing the constraints at 45 degrees or more (else
+at the best place found). `pocket_priority` is passed to every mesher
+(`Advancing_front_mesher_2::set_pocket_priority()`).
 
 Constraints are split to the sizing field first, as `advancing_front_mesh_2()`
 does (`split_constraints == false` keeps them, except where a cut
@@ -401,7 +436,7 @@ and by the cuts.
 template <class CDT, class InputIterator, class Size, class OnSplit>
 Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIterator seeds_end, const Size& size,
                                     bool mark, std::size_t threads, Parallel_mesh_statistics& st,
-                                    bool split_constraints, OnSplit on_split)
+                                    bool split_constraints, OnSplit on_split, bool pocket_priority = true)
 {
   typedef typename CDT::Geom_traits Gt;
   typedef typename CDT::Point Point;
@@ -420,13 +455,19 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   const auto t_start = std::chrono::steady_clock::now();
 
   auto in_one_piece = [&](const std::string& why) {
+    // what a failed decomposition recorded is not this run's
+    const double cutting = internal::parallel_seconds_since(t_start);
+    const std::size_t cut_points = st.cut_points;
+    st = Parallel_mesh_statistics();
+    st.threads = threads;
     st.one_piece_reason = why;
-    st.parts = 1;
-    st.decomposition_time = internal::parallel_seconds_since(t_start);
+    st.cut_points = cut_points; // the cuts made stay in the boundary
+    st.decomposition_time = cutting;
     const auto t_mesh = std::chrono::steady_clock::now();
     Mesher mesher(cdt, field);
     mesher.set_seeds(seeds.begin(), seeds.end(), mark);
     mesher.set_constraint_splitting(false);
+    mesher.set_pocket_priority(pocket_priority);
     const Mesh_return_code rc = mesher.refine_mesh();
     st.meshing_time = internal::parallel_seconds_since(t_mesh);
     st.part_statistics.assign(1, mesher.statistics());
@@ -453,8 +494,10 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
     for(const internal::Strip_cut& cut : plan.cuts) {
       crossings.push_back(internal::cut_constraints(cdt, plan.axis, cut.position, on_split));
       st.cut_points += crossings.back().size();
+      // the faces the splits made are unmarked: the next cut finds the
+      // constraints of the domain by the marks
+      Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
     }
-    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
     for(std::size_t k = 0; k < plan.cuts.size(); ++k) {
       chains_of_cut.push_back(internal::interface_chains(cdt, field, plan.axis, crossings[k]));
       for(const auto& chain : chains_of_cut.back()) st.interface_points += chain.size() - 2;
@@ -502,6 +545,7 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
       const Field part_field = field;
       Mesher mesher(part_cdt[i], part_field);
       mesher.use_domain_marks();
+      mesher.set_pocket_priority(pocket_priority);
       codes[i] = mesher.refine_mesh();
       st.part_statistics[i] = mesher.statistics();
     } catch(const std::exception& e) {
@@ -519,8 +563,8 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
 #elif defined(CGAL_LINKED_WITH_TBB)
   // more threads than cores when asked (TBB limits its workers to the
   // cores otherwise)
-  tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, threads);
-  tbb::task_arena arena{int(threads)};
+  tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, parts);
+  tbb::task_arena arena{int(parts)};
   arena.execute([&] { tbb::parallel_for(std::size_t(0), parts, mesh_part); });
 #else
   for(std::size_t i = 0; i < parts; ++i) mesh_part(i);
@@ -547,17 +591,11 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   std::vector<Vertex_handle> new_vertices;
   st.stitched = internal::stitch_parts(cdt, part_cdt, new_vertices);
   if(!st.stitched) {
-    std::vector<Point> points;
-    for(std::size_t i = 0; i < parts; ++i)
-      for(auto v = part_cdt[i].finite_vertices_begin(); v != part_cdt[i].finite_vertices_end(); ++v)
-        points.push_back(v->point());
-    std::unordered_set<Vertex_handle, Handle_hash_function> input_vertices;
-    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) input_vertices.insert(v);
+    // a part's boundary does not fit the domain's (a region a part did not
+    // mark, a free point outside its part): the parts cannot be trusted to
+    // cover the domain, and the triangulation is as it was
     part_cdt.clear();
-    cdt.insert(points.begin(), points.end());
-    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
-    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      if(!input_vertices.count(v)) new_vertices.push_back(v);
+    return in_one_piece("the parts do not fit together");
   }
   part_cdt.clear();
   st.merge_time = internal::parallel_seconds_since(t_merge);

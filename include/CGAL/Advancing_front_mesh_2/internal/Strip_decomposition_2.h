@@ -140,8 +140,10 @@ Strip_plan plan_strips(const CDT& cdt, const Field& field, std::size_t parts, do
   double total = 0;
   for(double c : slice) total += c;
   plan.estimated_total = total;
-  parts = (std::min)(parts, std::size_t((std::max)(1., std::floor(total / min_part_triangles))));
-  if(parts < 2) return plan;
+  // in doubles: a tiny size predicts more triangles than a size_t holds
+  const double fitting = std::floor(total / min_part_triangles);
+  if(!(fitting >= 2)) return plan;
+  if(fitting < double(parts)) parts = std::size_t(fitting);
 
   // the vertices and constraints a cut must keep clear of, with the local
   // size at each vertex
@@ -220,8 +222,12 @@ Strip_plan plan_strips(const CDT& cdt, const Field& field, std::size_t parts, do
       return std::abs(c - target) <= window && std::abs(count_below(c) - share) <= 0.04 * total / double(parts);
     };
     std::vector<double> candidates(1, target);
-    for(double c = target - window; c <= target + window; c += step / 4)
+    // by index: far from the origin, adding a quarter slice may not move c
+    const int quarters = int(std::ceil(window / (step / 4)));
+    for(int q = -quarters; q <= quarters; ++q) {
+      const double c = target + q * (step / 4);
       if(balanced_enough(c)) candidates.push_back(c);
+    }
     for(const Vertex_record& v : vertices)
       if(v.on_constraint && balanced_enough(v.along)) candidates.push_back(v.along);
     std::sort(candidates.begin(), candidates.end(),
