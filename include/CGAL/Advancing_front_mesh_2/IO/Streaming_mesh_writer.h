@@ -214,12 +214,12 @@ public:
                                   " has a coordinate that is not a finite double");
 
     // "x y", formatted once for all text outputs
-    char xy[2 * internal::streaming_max_double_chars + 1];
-    char* e = internal::streaming_format_double(xy, x);
+    char xy[2 * internal::text_max_double_chars + 1];
+    char* e = internal::text_format_double(xy, x);
     *e++ = ' ';
-    e = internal::streaming_format_double(e, y);
+    e = internal::text_format_double(e, y);
     const std::size_t n = static_cast<std::size_t>(e - xy);
-    char mark[internal::streaming_max_uint_chars + 2];
+    char mark[internal::text_max_uint_chars + 2];
     const std::size_t nm = static_cast<std::size_t>(std::to_chars(mark, mark + sizeof(mark), marker).ptr - mark);
 
     guarded([&] {
@@ -230,9 +230,9 @@ public:
           if(o->vertex_markers != nullptr) internal::streaming_put_raw(o->vertex_markers->file, std::int32_t(marker));
           continue;
         }
-        char* c = f.reserve(2 * internal::streaming_max_uint_chars + n + 8);
+        char* c = f.reserve(2 * internal::text_max_uint_chars + n + 8);
         if(o->format == internal::Streaming_format::NODE_ELE) {
-          c = internal::streaming_format_uint(c, std::uint64_t(index) + 1);
+          c = internal::text_format_uint(c, std::uint64_t(index) + 1);
           *c++ = ' ';
           std::memcpy(c, xy, n);
           c += n;
@@ -299,22 +299,22 @@ public:
     }
 
     // "i j k" (0-based) and "t i j k" (1-based), each formatted once
-    char zero[3 * (internal::streaming_max_uint_chars + 1)];
-    char one[4 * (internal::streaming_max_uint_chars + 1) + internal::streaming_max_double_chars + 1];
+    char zero[3 * (internal::text_max_uint_chars + 1)];
+    char one[4 * (internal::text_max_uint_chars + 1) + internal::text_max_double_chars + 1];
     char* z = zero;
-    char* w = internal::streaming_format_uint(one, std::uint64_t(nt_) + 1);
+    char* w = internal::text_format_uint(one, std::uint64_t(nt_) + 1);
     for(std::size_t v : {i, j, k}) {
       if(z != zero)
         *z++ = ' ';
-      z = internal::streaming_format_uint(z, v);
+      z = internal::text_format_uint(z, v);
       *w++ = ' ';
-      w = internal::streaming_format_uint(w, std::uint64_t(v) + 1);
+      w = internal::text_format_uint(w, std::uint64_t(v) + 1);
     }
     *z++ = '\n';
     const std::size_t nz = static_cast<std::size_t>(z - zero);
     const std::size_t nw = static_cast<std::size_t>(w - one); // without the line end
-    char attr[internal::streaming_max_double_chars + 1];
-    const std::size_t na = static_cast<std::size_t>(internal::streaming_format_double(attr, attribute) - attr);
+    char attr[internal::text_max_double_chars + 1];
+    const std::size_t na = static_cast<std::size_t>(internal::text_format_double(attr, attribute) - attr);
 
     guarded([&] {
       for(const std::unique_ptr<internal::Streaming_output>& o : outputs_) {
@@ -406,7 +406,7 @@ public:
       s += name;
     };
     auto put_double = [&s](double v) {
-      char b[internal::streaming_max_double_chars];
+      char b[internal::text_max_double_chars];
       s.append(b, std::to_chars(b, b + sizeof(b), v, std::chars_format::hex).ptr);
     };
     s += std::string("content ") + (content_.binary ? "1 " : "0 ") + (content_.tagged ? "1 " : "0 ") +

@@ -18,6 +18,8 @@
 #include <boost/io/ios_state.hpp>
 
 #include <array>
+#include <charconv>
+#include <cstdint>
 #include <cstddef>
 #include <fstream>
 #include <ios>
@@ -34,6 +36,24 @@ namespace Advancing_front_mesh_2 {
 namespace IO {
 
 namespace internal {
+
+// Longest outputs of std::to_chars: "-2.2250738585072014e-308" has 24
+// characters, a 64-bit unsigned integer 20.
+constexpr std::size_t text_max_double_chars = 32;
+constexpr std::size_t text_max_uint_chars = 20;
+
+// The shortest decimal that reads back to the same double, in the "C"
+// locale whatever the global one is: files read back exactly, and are
+// about half the size of max_digits10 output for round numbers.
+inline char* text_format_double(char* p, double v)
+{
+  return std::to_chars(p, p + text_max_double_chars, v).ptr;
+}
+
+inline char* text_format_uint(char* p, std::uint64_t v)
+{
+  return std::to_chars(p, p + text_max_uint_chars, v).ptr;
+}
 
 // What every writer needs: the in-domain triangles and only the vertices they
 // use, numbered in order of first appearance, so that two writes of the same

@@ -69,8 +69,8 @@ inline void streaming_copy(Streaming_file& out, const Streaming_file& part)
 
 inline void streaming_put_int(Streaming_file& f, long long v)
 {
-  char* c = f.reserve(streaming_max_uint_chars + 2);
-  f.commit(std::to_chars(c, c + streaming_max_uint_chars + 2, v).ptr);
+  char* c = f.reserve(text_max_uint_chars + 2);
+  f.commit(std::to_chars(c, c + text_max_uint_chars + 2, v).ptr);
 }
 
 // The .node and .ele parts get their counts: they are the temporary files
@@ -111,8 +111,8 @@ inline void streaming_put_msh_nodes(Streaming_file& out, Streaming_output& o, co
     out.put("1 "); out.put_uint(t.nv); out.put(" 1 "); out.put_uint(t.nv);
     out.put("\n2 1 0 "); out.put_uint(t.nv); out.put("\n");
     for(std::uint64_t i = 1; i <= t.nv; ++i) {
-      char* p = out.reserve(streaming_max_uint_chars + 1);
-      p = streaming_format_uint(p, i);
+      char* p = out.reserve(text_max_uint_chars + 1);
+      p = text_format_uint(p, i);
       *p++ = '\n';
       out.commit(p);
     }
@@ -217,7 +217,7 @@ inline void streaming_write_vtu(Streaming_file& out, Streaming_output& o, const 
     if(binary) {
       streaming_put_raw(out, v);
     } else {
-      char b[streaming_max_double_chars + 1];
+      char b[text_max_double_chars + 1];
       char* e = std::to_chars(b, b + sizeof(b) - 1, v).ptr;
       *e++ = '\n';
       out.put(b, static_cast<std::size_t>(e - b));

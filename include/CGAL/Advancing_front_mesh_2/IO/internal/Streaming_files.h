@@ -44,29 +44,11 @@ namespace internal {
 
 enum class Streaming_format { OFF, VTU, NODE_ELE, MSH };
 
-// Longest outputs of std::to_chars: "-2.2250738585072014e-308" has 24
-// characters, a 64-bit unsigned integer 20.
-constexpr std::size_t streaming_max_double_chars = 32;
-constexpr std::size_t streaming_max_uint_chars = 20;
-
 // The count in the first line of a .node or .ele file written while
 // streaming is not known until the end: it is reserved as a field this wide,
 // padded with spaces, and overwritten in place by close(). Triangle's
 // readers, like every other reader of these files, split on whitespace.
-constexpr std::size_t streaming_count_width = streaming_max_uint_chars;
-
-// The shortest decimal that reads back to the same double, in the "C"
-// locale whatever the global one is: files read back exactly, and are
-// about half the size of max_digits10 output for round numbers.
-inline char* streaming_format_double(char* p, double v)
-{
-  return std::to_chars(p, p + streaming_max_double_chars, v).ptr;
-}
-
-inline char* streaming_format_uint(char* p, std::uint64_t v)
-{
-  return std::to_chars(p, p + streaming_max_uint_chars, v).ptr;
-}
+constexpr std::size_t streaming_count_width = text_max_uint_chars;
 
 // A file written from start to end through a large buffer of our own (the
 // meshes reach gigabytes, and stdio's per-call formatting and iostream's
@@ -131,14 +113,14 @@ public:
 
   void put_uint(std::uint64_t v)
   {
-    char* p = reserve(streaming_max_uint_chars);
-    commit(streaming_format_uint(p, v));
+    char* p = reserve(text_max_uint_chars);
+    commit(text_format_uint(p, v));
   }
 
   void put_double(double v)
   {
-    char* p = reserve(streaming_max_double_chars);
-    commit(streaming_format_double(p, v));
+    char* p = reserve(text_max_double_chars);
+    commit(text_format_double(p, v));
   }
 
   // Hands everything to the operating system; throws on a write error.
@@ -400,7 +382,7 @@ inline void streaming_check_distinct(const std::vector<std::unique_ptr<Streaming
 inline void streaming_put_count_line(Streaming_file& f, std::uint64_t count, const char* tail)
 {
   char line[streaming_count_width + 16];
-  char* p = streaming_format_uint(line, count);
+  char* p = text_format_uint(line, count);
   while(p < line + streaming_count_width)
     *p++ = ' ';
   f.put(line, streaming_count_width);
@@ -411,7 +393,7 @@ inline void streaming_put_count_line(Streaming_file& f, std::uint64_t count, con
 inline void streaming_patch_count(const std::string& path, std::uint64_t count)
 {
   char field[streaming_count_width];
-  char* p = streaming_format_uint(field, count);
+  char* p = text_format_uint(field, count);
   while(p < field + streaming_count_width)
     *p++ = ' ';
   std::FILE* f = std::fopen(path.c_str(), "r+b");
