@@ -41,40 +41,43 @@ namespace internal {
 template <class CDT>
 void mesh_write_node(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  const Mesh_exact_format_scope format(os);
-  os << m.points.size() << " 2 0 " << (m.tagged ? 1 : 0) << "\n";
+  Text_output out(os);
+  out.put_uint(m.points.size()).put(" 2 0 ").put(m.tagged ? '1' : '0').put('\n');
   for(std::size_t i = 0; i < m.points.size(); ++i) {
-    os << (i + 1) << ' ' << m.points[i][0] << ' ' << m.points[i][1];
-    if(m.tagged) os << ' ' << m.point_markers[i];
-    os << '\n';
+    out.put_uint(i + 1).put(' ').put_double(m.points[i][0]).put(' ').put_double(m.points[i][1]);
+    if(m.tagged) out.put(' ').put_int(m.point_markers[i]);
+    out.put('\n');
   }
+  out.flush();
 }
 
 // Triangle's .ele: with regions, the regional attribute of each triangle.
 template <class CDT>
 void mesh_write_ele(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  const Mesh_exact_format_scope format(os);
-  os << m.triangles.size() << " 3 " << (m.has_regions ? 1 : 0) << "\n";
+  Text_output out(os);
+  out.put_uint(m.triangles.size()).put(" 3 ").put(m.has_regions ? '1' : '0').put('\n');
   for(std::size_t i = 0; i < m.triangles.size(); ++i) {
     const std::array<std::size_t, 3>& t = m.triangles[i];
-    os << (i + 1) << ' ' << (t[0] + 1) << ' ' << (t[1] + 1) << ' ' << (t[2] + 1);
-    if(m.has_regions) os << ' ' << m.triangle_attributes[i];
-    os << '\n';
+    out.put_uint(i + 1).put(' ').put_uint(t[0] + 1).put(' ').put_uint(t[1] + 1).put(' ').put_uint(t[2] + 1);
+    if(m.has_regions) out.put(' ').put_double(m.triangle_attributes[i]);
+    out.put('\n');
   }
+  out.flush();
 }
 
 // Triangle's .edge, of the segments only: with tags, their markers.
 template <class CDT>
 void mesh_write_edge(std::ostream& os, const Mesh_domain_view<CDT>& m)
 {
-  const Mesh_exact_format_scope format(os);
-  os << m.segments.size() << ' ' << (m.tagged ? 1 : 0) << "\n";
+  Text_output out(os);
+  out.put_uint(m.segments.size()).put(' ').put(m.tagged ? '1' : '0').put('\n');
   for(std::size_t i = 0; i < m.segments.size(); ++i) {
-    os << (i + 1) << ' ' << (m.segments[i][0] + 1) << ' ' << (m.segments[i][1] + 1);
-    if(m.tagged) os << ' ' << m.segment_markers[i];
-    os << '\n';
+    out.put_uint(i + 1).put(' ').put_uint(m.segments[i][0] + 1).put(' ').put_uint(m.segments[i][1] + 1);
+    if(m.tagged) out.put(' ').put_int(m.segment_markers[i]);
+    out.put('\n');
   }
+  out.flush();
 }
 
 } // namespace internal
@@ -88,8 +91,9 @@ the line `nv nf 0`, the vertices as `x y 0` and the faces as `3 i j k`
 
 Only finite faces with `is_in_domain()` are written, and only the vertices
 they use, numbered in order of first appearance when iterating over the
-finite faces. Coordinates are written with `max_digits10` digits, so they
-read back exactly. The stream's formatting state is restored afterwards.
+finite faces. Coordinates are written as the shortest decimals that read
+back to the same doubles (`std::to_chars()`), whatever the stream's locale
+and formatting; the stream's state is left as it was.
 
 \tparam CDT a `Constrained_Delaunay_triangulation_2` or
 `Constrained_triangulation_plus_2` whose face base is a model of
@@ -103,12 +107,12 @@ void write_OFF(std::ostream& os, const CDT& cdt)
 {
   internal::Mesh_domain_view<CDT> m;
   internal::mesh_collect_domain(cdt, m);
-  const internal::Mesh_exact_format_scope format(os);
-  os << "OFF\n" << m.points.size() << ' ' << m.triangles.size() << " 0\n";
-  for(const std::array<double, 2>& p : m.points)
-    os << p[0] << ' ' << p[1] << " 0\n";
+  internal::Text_output out(os);
+  out.put("OFF\n").put_uint(m.points.size()).put(' ').put_uint(m.triangles.size()).put(" 0\n");
+  for(const std::array<double, 2>& p : m.points) out.put_double(p[0]).put(' ').put_double(p[1]).put(" 0\n");
   for(const std::array<std::size_t, 3>& t : m.triangles)
-    os << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    out.put("3 ").put_uint(t[0]).put(' ').put_uint(t[1]).put(' ').put_uint(t[2]).put('\n');
+  out.flush();
 }
 
 /*!

@@ -12,7 +12,8 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
-#include <CGAL/Unique_hash_map.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
+
 #include <CGAL/number_utils.h>
 
 #include <boost/io/ios_state.hpp>
@@ -55,6 +56,80 @@ inline char* text_format_uint(char* p, std::uint64_t v)
   return std::to_chars(p, p + text_max_uint_chars, v).ptr;
 }
 
+// Text written to a stream through a buffer of our own, numbers formatted
+// by text_format_*(): at a million triangles, iostream's formatting of
+// doubles with max_digits10 digits (glibc's exact printf) and its per-call
+// sentries took a second, a quarter of the whole run. The buffer goes to
+// the stream when full and by flush() (the destructor flushes too, but a
+// writer calls flush() so that the stream's state is final when it
+// returns).
+class Text_output
+{
+public:
+  explicit Text_output(std::ostream& os) : os_(os) {}
+  Text_output(const Text_output&) = delete;
+  Text_output& operator=(const Text_output&) = delete;
+  ~Text_output() { flush(); }
+
+  Text_output& put(char c)
+  {
+    room(1);
+    buf_[used_++] = c;
+    return *this;
+  }
+
+  Text_output& put(const char* s)
+  {
+    for(; *s != 0; ++s) put(*s);
+    return *this;
+  }
+
+  Text_output& put(const std::string& s)
+  {
+    for(char c : s) put(c);
+    return *this;
+  }
+
+  Text_output& put_uint(std::uint64_t v)
+  {
+    room(text_max_uint_chars);
+    used_ = std::size_t(text_format_uint(buf_.data() + used_, v) - buf_.data());
+    return *this;
+  }
+
+  Text_output& put_int(long long v)
+  {
+    room(text_max_uint_chars + 1);
+    used_ = std::size_t(std::to_chars(buf_.data() + used_, buf_.data() + capacity, v).ptr - buf_.data());
+    return *this;
+  }
+
+  Text_output& put_double(double v)
+  {
+    room(text_max_double_chars);
+    used_ = std::size_t(text_format_double(buf_.data() + used_, v) - buf_.data());
+    return *this;
+  }
+
+  void flush()
+  {
+    if(used_ > 0) os_.write(buf_.data(), std::streamsize(used_));
+    used_ = 0;
+  }
+
+private:
+  static constexpr std::size_t capacity = 1 << 16;
+
+  void room(std::size_t n)
+  {
+    if(capacity - used_ < n) flush();
+  }
+
+  std::ostream& os_;
+  std::vector<char> buf_ = std::vector<char>(capacity);
+  std::size_t used_ = 0;
+};
+
 // What every writer needs: the in-domain triangles and only the vertices they
 // use, numbered in order of first appearance, so that two writes of the same
 // triangulation give identical files and the numbering of .node and .ele
@@ -86,7 +161,14 @@ void mesh_collect_domain(const CDT& cdt, Mesh_domain_view<CDT>& m)
   typedef typename CDT::Vertex_handle Vertex_handle;
   typedef typename CDT::Face_handle Face_handle;
   const std::size_t none = (std::numeric_limits<std::size_t>::max)();
-  CGAL::Unique_hash_map<Vertex_handle, std::size_t> index(none, cdt.number_of_vertices());
+  // the numbers by address in flat tables: CGAL::Unique_hash_map's chained
+  // lists took a fifth of writing a million-triangle mesh
+  CGAL::Advancing_front_mesh_2::internal::Flat_hash_map<const void*, std::size_t> index(nullptr);
+  index.reserve(cdt.number_of_vertices());
+  m.points.reserve(cdt.number_of_vertices());
+  m.vertices.reserve(cdt.number_of_vertices());
+  m.triangles.reserve(cdt.number_of_faces());
+  m.faces.reserve(cdt.number_of_faces());
   for(typename CDT::Finite_faces_iterator fit = cdt.finite_faces_begin();
       fit != cdt.finite_faces_end(); ++fit) {
     if(!fit->is_in_domain())
@@ -95,28 +177,36 @@ void mesh_collect_domain(const CDT& cdt, Mesh_domain_view<CDT>& m)
     std::array<std::size_t, 3> t;
     for(int i = 0; i < 3; ++i) {
       const Vertex_handle v = f->vertex(i);
-      std::size_t& k = index[v];
-      if(k == none) {
-        k = m.points.size();
+      const std::size_t* k = index.find(&*v);
+      if(k == nullptr) {
+        k = &index.insert(&*v, m.points.size());
         m.points.push_back(std::array<double, 2>{{CGAL::to_double(v->point().x()),
                                                   CGAL::to_double(v->point().y())}});
         m.vertices.push_back(v);
       }
-      t[i] = k;
+      t[i] = *k;
     }
     m.triangles.push_back(t);
     m.faces.push_back(f);
   }
-  CGAL::Unique_hash_map<Face_handle, std::size_t> face_index(none, m.faces.size());
-  for(std::size_t t = 0; t < m.faces.size(); ++t) face_index[m.faces[t]] = t;
+  // an edge between two domain faces is listed from the face seen first:
+  // the faces' numbers are only needed for such edges
+  CGAL::Advancing_front_mesh_2::internal::Flat_hash_map<const void*, std::size_t> face_index(nullptr);
+  auto number_of = [&](Face_handle g) {
+    if(face_index.empty()) {
+      face_index.reserve(m.faces.size());
+      for(std::size_t t = 0; t < m.faces.size(); ++t) face_index.insert(&*m.faces[t], t);
+    }
+    const std::size_t* k = face_index.find(&*g);
+    return k == nullptr ? none : *k;
+  };
   for(std::size_t t = 0; t < m.faces.size(); ++t) {
     const Face_handle f = m.faces[t];
     for(int i = 0; i < 3; ++i) {
-      if(!cdt.is_constrained(std::make_pair(f, i))) continue;
-      // an edge between two domain faces is listed from the face seen first
-      const std::size_t other = face_index[f->neighbor(i)];
-      if(other != none && other < t) continue;
-      m.segments.push_back({{index[f->vertex(CDT::ccw(i))], index[f->vertex(CDT::cw(i))]}});
+      if(!f->is_constrained(i)) continue;
+      const Face_handle g = f->neighbor(i);
+      if(!cdt.is_infinite(g) && g->is_in_domain() && number_of(g) < t) continue;
+      m.segments.push_back({{*index.find(&*f->vertex(CDT::ccw(i))), *index.find(&*f->vertex(CDT::cw(i)))}});
       m.segment_edges.emplace_back(f, i);
     }
   }
