@@ -218,52 +218,59 @@ struct Point_hash
   }
 };
 
-// The merge without a search: the in-domain faces of `cdt` are replaced by
-// the parts' in-domain faces, linked to each other within a part as they
-// were, to the faces outside the domain across its boundary edges (which
-// the parts share with `cdt`: they were made from its constraints), and to
-// the other part's faces across the interfaces, which are released (not
-// constrained); Lawson's flips from the interface edges then make the mesh
-// constrained Delaunay across them. Everything is matched before anything
-// changes: false (and `cdt` and the parts as they were) when a part's
-// boundary does not fit, or a free point of the domain is in no part's
-// triangles (the caller meshes in one piece instead). Each part
-// is cleared once its triangles are copied. The vertices made are appended
-// to `made`.
+// A directed edge by its end points, as a hash key.
+template <class Point>
+struct Point_pair_hash
+{
+  std::size_t operator()(const std::pair<Point, Point>& e) const
+  {
+    return Point_hash<Point>()(e.first) * 31 + Point_hash<Point>()(e.second);
+  }
+};
+
+// What the merge matches by: the domain's vertices by point, and its
+// boundary edges, directed with the domain on their left, with the face
+// outside (and that face's index of the edge).
 template <class CDT>
-bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::Vertex_handle>& made)
+struct Stitch_tables
+{
+  typedef typename CDT::Point Point;
+  typedef std::pair<Point, Point> Point_pair;
+  std::unordered_map<Point, typename CDT::Vertex_handle, Point_hash<Point> > vertex_at;
+  std::unordered_map<Point_pair, std::pair<typename CDT::Face_handle, int>, Point_pair_hash<Point> > outside;
+  std::vector<typename CDT::Face_handle> domain_faces;
+
+  explicit Stitch_tables(const CDT& cdt)
+  {
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vertex_at.emplace(v->point(), v);
+    for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      if(!f->is_in_domain()) continue;
+      domain_faces.push_back(f);
+      for(int k = 0; k < 3; ++k) {
+        const typename CDT::Face_handle g = f->neighbor(k);
+        if(!cdt.is_infinite(g) && g->is_in_domain()) continue;
+        outside.emplace(Point_pair(f->vertex(CDT::ccw(k))->point(), f->vertex(CDT::cw(k))->point()),
+                        std::make_pair(g, g->index(f)));
+      }
+    }
+  }
+};
+
+// Whether the parts fit the domain: each part's open edges lie on the
+// domain's boundary or on an interface that another part closes the other
+// way, together they cover the domain's boundary, and every vertex of the
+// domain on no constraint (a free point) is a vertex of some part's domain
+// (the boundary edges alone do not show a free point left outside its
+// part's domain: it could lie within rounding of a cut).
+template <class CDT>
+bool parts_fit(const CDT& cdt, const std::vector<CDT>& parts, const Stitch_tables<CDT>& tables)
 {
   typedef typename CDT::Point Point;
   typedef typename CDT::Vertex_handle Vertex_handle;
   typedef typename CDT::Face_handle Face_handle;
   typedef std::pair<Point, Point> Point_pair;
-  struct Pair_hash
-  {
-    std::size_t operator()(const Point_pair& e) const
-    {
-      return Point_hash<Point>()(e.first) * 31 + Point_hash<Point>()(e.second);
-    }
-  };
-  // cdt's vertices, and its domain's boundary edges, directed with the
-  // domain on their left, with the face outside
-  std::unordered_map<Point, Vertex_handle, Point_hash<Point> > vertex_at;
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vertex_at.emplace(v->point(), v);
-  std::unordered_map<Point_pair, std::pair<Face_handle, int>, Pair_hash> outside;
-  std::vector<Face_handle> domain_faces;
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if(!f->is_in_domain()) continue;
-    domain_faces.push_back(f);
-    for(int k = 0; k < 3; ++k) {
-      const Face_handle g = f->neighbor(k);
-      if(!cdt.is_infinite(g) && g->is_in_domain()) continue;
-      outside.emplace(Point_pair(f->vertex(CDT::ccw(k))->point(), f->vertex(CDT::cw(k))->point()),
-                      std::make_pair(g, g->index(f)));
-    }
-  }
-  // the parts' open edges: each on the domain's boundary or on an interface
-  // that another part closes the other way
   std::size_t boundary_edges = 0;
-  std::unordered_map<Point_pair, int, Pair_hash> interface_sides;
+  std::unordered_map<Point_pair, int, Point_pair_hash<Point> > interface_sides;
   for(const CDT& part : parts)
     for(auto f = part.finite_faces_begin(); f != part.finite_faces_end(); ++f) {
       if(!f->is_in_domain()) continue;
@@ -271,7 +278,7 @@ bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::V
         const Face_handle g = f->neighbor(k);
         if(!part.is_infinite(g) && g->is_in_domain()) continue;
         Point_pair e(f->vertex(CDT::ccw(k))->point(), f->vertex(CDT::cw(k))->point());
-        if(outside.count(e)) {
+        if(tables.outside.count(e)) {
           ++boundary_edges;
           continue;
         }
@@ -285,11 +292,8 @@ bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::V
         }
       }
     }
-  if(boundary_edges != outside.size() || !interface_sides.empty()) return false;
-  // the vertices of the domain on no constraint (free points) are in the
-  // triangles of a part: the boundary edges alone do not show a free point
-  // left outside its part's domain (it could lie within rounding of a cut)
-  for(Face_handle f : domain_faces)
+  if(boundary_edges != tables.outside.size() || !interface_sides.empty()) return false;
+  for(Face_handle f : tables.domain_faces)
     for(int k = 0; k < 3; ++k) {
       const Vertex_handle v = f->vertex(k);
       if(cdt.are_there_incident_constraints(v)) continue;
@@ -307,87 +311,293 @@ bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::V
       }
       if(!found) return false;
     }
+  return true;
+}
 
-  // the replacement
-  for(Face_handle f : domain_faces) cdt.tds().delete_face(f);
-  std::unordered_map<Point_pair, std::pair<Face_handle, int>, Pair_hash> open_interfaces;
-  std::vector<typename CDT::Edge> seams;
-  for(CDT& part : parts) {
-    // the part's vertices by address, in flat tables (node-based
-    // maps cost a third of the merge at a million triangles)
-    Flat_hash_map<const void*, Vertex_handle> vertex_of(nullptr);
-    vertex_of.reserve(part.number_of_vertices());
-    for(auto v = part.finite_vertices_begin(); v != part.finite_vertices_end(); ++v) {
-      auto it = vertex_at.find(v->point());
-      Vertex_handle w;
-      if(it != vertex_at.end()) {
-        w = it->second;
-      } else {
-        w = cdt.tds().create_vertex();
-        w->set_point(v->point());
-        made.push_back(w);
-        // an interface point: the part on the other side finds it
-        if(part.are_there_incident_constraints(v)) vertex_at.emplace(v->point(), w);
-      }
-      vertex_of.insert(&*v, w);
+// Copies the in-domain faces of `part` into `cdt` (whose domain faces are
+// gone), linked to each other as they were, to the faces outside the domain
+// across its boundary edges, and across the interfaces to the faces of the
+// parts copied before (`open_interfaces`: the interface edges whose other
+// side is not copied yet), released; the joined interface edges are
+// appended to `seams`, the vertices made to `made`. The part is cleared.
+template <class CDT, class Open_interfaces>
+void copy_part(CDT& cdt, CDT& part, Stitch_tables<CDT>& tables, Open_interfaces& open_interfaces,
+               std::vector<typename CDT::Edge>& seams, std::vector<typename CDT::Vertex_handle>& made)
+{
+  typedef typename CDT::Point Point;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+  typedef std::pair<Point, Point> Point_pair;
+  // the part's vertices by address, in flat tables (node-based
+  // maps cost a third of the merge at a million triangles)
+  Flat_hash_map<const void*, Vertex_handle> vertex_of(nullptr);
+  vertex_of.reserve(part.number_of_vertices());
+  for(auto v = part.finite_vertices_begin(); v != part.finite_vertices_end(); ++v) {
+    auto it = tables.vertex_at.find(v->point());
+    Vertex_handle w;
+    if(it != tables.vertex_at.end()) {
+      w = it->second;
+    } else {
+      w = cdt.tds().create_vertex();
+      w->set_point(v->point());
+      made.push_back(w);
+      // an interface point: the part on the other side finds it
+      if(part.are_there_incident_constraints(v)) tables.vertex_at.emplace(v->point(), w);
     }
-    // Each in-domain face's image takes the face's neighbours, and the face
-    // keeps its image in its neighbour slot 0 (the parts are not used again),
-    // so that the images link up without a table of faces.
-    std::vector<Face_handle> images;
-    images.reserve(part.number_of_faces());
-    for(auto f = part.finite_faces_begin(); f != part.finite_faces_end(); ++f) {
-      if(!f->is_in_domain()) continue;
-      const Face_handle g = cdt.tds().create_face(*vertex_of.find(&*f->vertex(0)), *vertex_of.find(&*f->vertex(1)),
-                                                  *vertex_of.find(&*f->vertex(2)));
-      g->set_in_domain(true);
-      for(int k = 0; k < 3; ++k) {
-        g->set_constraint(k, f->is_constrained(k));
-        g->set_neighbor(k, f->neighbor(k));
-        g->vertex(k)->set_face(g);
-      }
-      f->set_neighbor(0, g);
-      images.push_back(g);
-    }
-    for(const Face_handle g : images) {
-      for(int k = 0; k < 3; ++k) {
-        const Face_handle n = g->neighbor(k); // still the part's face
-        if(!part.is_infinite(n) && n->is_in_domain()) {
-          g->set_neighbor(k, n->neighbor(0));
-          continue;
-        }
-        Point_pair e(g->vertex(CDT::ccw(k))->point(), g->vertex(CDT::cw(k))->point());
-        auto out = outside.find(e);
-        if(out != outside.end()) {
-          g->set_neighbor(k, out->second.first);
-          out->second.first->set_neighbor(out->second.second, g);
-          continue;
-        }
-        // an interface edge: joined to the other part's face, released
-        Point_pair twin(e.second, e.first);
-        auto other = open_interfaces.find(twin);
-        if(other == open_interfaces.end()) {
-          g->set_neighbor(k, Face_handle());
-          open_interfaces.emplace(e, std::make_pair(g, k));
-          continue;
-        }
-        const Face_handle h = other->second.first;
-        const int j = other->second.second;
-        g->set_neighbor(k, h);
-        h->set_neighbor(j, g);
-        g->set_constraint(k, false);
-        h->set_constraint(j, false);
-        seams.emplace_back(g, k);
-        open_interfaces.erase(other);
-      }
-    }
-    // its triangles are in cdt now: the part's memory goes back before the
-    // next part is copied (the peak is the mesh and one part, not two meshes)
-    part.clear();
+    vertex_of.insert(&*v, w);
   }
+  // Each in-domain face's image takes the face's neighbours, and the face
+  // keeps its image in its neighbour slot 0 (the parts are not used again),
+  // so that the images link up without a table of faces.
+  std::vector<Face_handle> images;
+  images.reserve(part.number_of_faces());
+  for(auto f = part.finite_faces_begin(); f != part.finite_faces_end(); ++f) {
+    if(!f->is_in_domain()) continue;
+    const Face_handle g = cdt.tds().create_face(*vertex_of.find(&*f->vertex(0)), *vertex_of.find(&*f->vertex(1)),
+                                                *vertex_of.find(&*f->vertex(2)));
+    g->set_in_domain(true);
+    for(int k = 0; k < 3; ++k) {
+      g->set_constraint(k, f->is_constrained(k));
+      g->set_neighbor(k, f->neighbor(k));
+      g->vertex(k)->set_face(g);
+    }
+    f->set_neighbor(0, g);
+    images.push_back(g);
+  }
+  for(const Face_handle g : images) {
+    for(int k = 0; k < 3; ++k) {
+      const Face_handle n = g->neighbor(k); // still the part's face
+      if(!part.is_infinite(n) && n->is_in_domain()) {
+        g->set_neighbor(k, n->neighbor(0));
+        continue;
+      }
+      Point_pair e(g->vertex(CDT::ccw(k))->point(), g->vertex(CDT::cw(k))->point());
+      auto out = tables.outside.find(e);
+      if(out != tables.outside.end()) {
+        g->set_neighbor(k, out->second.first);
+        out->second.first->set_neighbor(out->second.second, g);
+        continue;
+      }
+      // an interface edge: joined to the other part's face, released
+      Point_pair twin(e.second, e.first);
+      auto other = open_interfaces.find(twin);
+      if(other == open_interfaces.end()) {
+        g->set_neighbor(k, Face_handle());
+        open_interfaces.emplace(e, std::make_pair(g, k));
+        continue;
+      }
+      const Face_handle h = other->second.first;
+      const int j = other->second.second;
+      g->set_neighbor(k, h);
+      h->set_neighbor(j, g);
+      g->set_constraint(k, false);
+      h->set_constraint(j, false);
+      seams.emplace_back(g, k);
+      open_interfaces.erase(other);
+    }
+  }
+  // its triangles are in cdt now: the part's memory goes back before the
+  // next part is copied (the peak is the mesh and one part, not two meshes)
+  part.clear();
+}
+
+// The merge without a search: the in-domain faces of `cdt` are replaced by
+// the parts' in-domain faces, linked to each other within a part as they
+// were, to the faces outside the domain across its boundary edges (which
+// the parts share with `cdt`: they were made from its constraints), and to
+// the other part's faces across the interfaces, which are released (not
+// constrained); Lawson's flips from the interface edges then make the mesh
+// constrained Delaunay across them. Everything is matched before anything
+// changes: false (and `cdt` and the parts as they were) when the parts do
+// not fit (`parts_fit()`; the caller meshes in one piece instead). Each
+// part is cleared once its triangles are copied. The vertices made are
+// appended to `made`.
+template <class CDT>
+bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::Vertex_handle>& made)
+{
+  typedef typename CDT::Point Point;
+  typedef typename CDT::Face_handle Face_handle;
+  Stitch_tables<CDT> tables(cdt);
+  if(!parts_fit(cdt, parts, tables)) return false;
+  for(Face_handle f : tables.domain_faces) cdt.tds().delete_face(f);
+  std::unordered_map<std::pair<Point, Point>, std::pair<Face_handle, int>, Point_pair_hash<Point> > open_interfaces;
+  std::vector<typename CDT::Edge> seams;
+  for(CDT& part : parts) copy_part(cdt, part, tables, open_interfaces, seams, made);
   CGAL_assertion(open_interfaces.empty());
   lawson_flips(cdt, seams, [](Face_handle, Face_handle) {});
   return true;
+}
+
+// Makes the planned cuts in `cdt`: the constraints split where they cross
+// (`on_split` sees every split; the counts go to `st`) and the interfaces
+// discretised to `field`; returns the interface chains of each cut. Throws
+// std::runtime_error when a cut cannot be made.
+template <class CDT, class Field, class Point, class OnSplit>
+std::vector<std::vector<std::vector<Point> > > make_cuts(CDT& cdt, const Field& field, const Strip_plan& plan,
+                                                         const std::vector<Point>& seeds, bool mark,
+                                                         OnSplit& on_split, Parallel_mesh_statistics& st)
+{
+  typedef CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> > Mesh_2_mesher;
+  std::vector<std::vector<typename CDT::Vertex_handle> > crossings;
+  for(const Strip_cut& cut : plan.cuts) {
+    crossings.push_back(cut_constraints(cdt, plan.axis, cut.position, on_split));
+    st.cut_points += crossings.back().size();
+    // the faces the splits made are unmarked: the next cut finds the
+    // constraints of the domain by the marks
+    Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
+  }
+  std::vector<std::vector<std::vector<Point> > > chains_of_cut;
+  for(std::size_t k = 0; k < plan.cuts.size(); ++k) {
+    chains_of_cut.push_back(interface_chains(cdt, field, plan.axis, crossings[k]));
+    for(const auto& chain : chains_of_cut.back()) st.interface_points += chain.size() - 2;
+  }
+  return chains_of_cut;
+}
+
+// Each part's constraints and free points (the domain's vertices on no
+// constraint), by the side of the cuts.
+template <class CDT>
+void part_inputs(const CDT& cdt, const Strip_plan& plan,
+                 std::vector<std::vector<std::pair<typename CDT::Point, typename CDT::Point> > >& constraints,
+                 std::vector<std::vector<typename CDT::Point> >& free_points)
+{
+  typedef typename CDT::Point Point;
+  const std::size_t parts = plan.cuts.size() + 1;
+  constraints.assign(parts, {});
+  free_points.assign(parts, {});
+  for(const auto& e : domain_constraints(cdt)) {
+    const Point &a = e.first->point(), &b = e.second->point();
+    const double mx = 0.5 * (CGAL::to_double(a.x()) + CGAL::to_double(b.x()));
+    const double my = 0.5 * (CGAL::to_double(a.y()) + CGAL::to_double(b.y()));
+    constraints[part_of(coordinate(mx, my, plan.axis), plan.cuts)].emplace_back(a, b);
+  }
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    bool in_domain = false;
+    auto f = cdt.incident_faces(v), done = f;
+    do {
+      in_domain = in_domain || (!cdt.is_infinite(f) && f->is_in_domain());
+    } while(++f != done);
+    if(!in_domain || cdt.are_there_incident_constraints(v)) continue;
+    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
+    free_points[part_of(coordinate(x, y, plan.axis), plan.cuts)].push_back(v->point());
+  }
+}
+
+// Calls `work(i)` for every i < n, on n threads at once.
+template <class Work>
+void run_on_threads(std::size_t n, Work work)
+{
+#if defined(__SANITIZE_THREAD__)
+  // Under ThreadSanitizer, one std::thread per part: TSan does not see
+  // oneTBB's synchronisation (Debian's libtbb is not instrumented) and
+  // reports its task hand-overs as races; with threads it checks the
+  // parts' own accesses, which are the same code.
+  std::vector<std::thread> workers;
+  for(std::size_t i = 0; i < n; ++i) workers.emplace_back(work, i);
+  for(std::thread& w : workers) w.join();
+#elif defined(CGAL_LINKED_WITH_TBB)
+  // more threads than cores when asked (TBB limits its workers to the
+  // cores otherwise)
+  tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, n);
+  tbb::task_arena arena{int(n)};
+  arena.execute([&] { tbb::parallel_for(std::size_t(0), n, work); });
+#else
+  for(std::size_t i = 0; i < n; ++i) work(i);
+#endif
+}
+
+// The seams: where the rows of triangles grown from an interface meet
+// those grown from the boundary, triangles are worse than where one front
+// sweeps through. Of the vertices the parts made, those within `width`
+// local sizes of a cut (the interface points among them, no longer on any
+// constraint). The local size is only asked near the cuts: within
+// `width` times twice the largest size on the interfaces.
+template <class Vertex_handle, class Point, class Field>
+std::vector<Vertex_handle> seam_vertices(const std::vector<Vertex_handle>& made, const Strip_plan& plan,
+                                         const std::vector<std::vector<std::vector<Point> > >& chains_of_cut,
+                                         const Field& field, double width)
+{
+  double interface_size = 0;
+  for(const auto& chains : chains_of_cut)
+    for(const auto& chain : chains)
+      for(const Point& p : chain) interface_size = (std::max)(interface_size, CGAL::to_double(field(p)));
+  std::vector<Vertex_handle> seam;
+  for(Vertex_handle v : made) {
+    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
+    const double a = coordinate(x, y, plan.axis);
+    const std::size_t part = part_of(a, plan.cuts);
+    for(std::size_t k : {part - 1, part}) {
+      if(k >= plan.cuts.size()) continue;
+      const double d = std::abs(a - plan.cuts[k].position);
+      if(d <= 2 * width * interface_size && d <= width * CGAL::to_double(field(v->point()))) {
+        seam.push_back(v);
+        break;
+      }
+    }
+  }
+  return seam;
+}
+
+// The domain of `cdt` meshed by the serial mesher, and `st` saying why
+// (what a failed decomposition recorded is not this run's, except the cut
+// points made, which stay in the boundary).
+template <class Mesher, class CDT, class Field, class Point>
+Mesh_return_code mesh_in_one_piece(CDT& cdt, const Field& field, const std::vector<Point>& seeds, bool mark,
+                                   bool pocket_priority, const std::string& why,
+                                   std::chrono::steady_clock::time_point t_start, Parallel_mesh_statistics& st)
+{
+  const double cutting = parallel_seconds_since(t_start);
+  const std::size_t cut_points = st.cut_points, threads = st.threads;
+  st = Parallel_mesh_statistics();
+  st.threads = threads;
+  st.one_piece_reason = why;
+  st.cut_points = cut_points;
+  st.decomposition_time = cutting;
+  const auto t_mesh = std::chrono::steady_clock::now();
+  Mesher mesher(cdt, field);
+  mesher.set_seeds(seeds.begin(), seeds.end(), mark);
+  mesher.set_constraint_splitting(false);
+  mesher.set_pocket_priority(pocket_priority);
+  const Mesh_return_code rc = mesher.refine_mesh();
+  st.meshing_time = parallel_seconds_since(t_mesh);
+  st.part_statistics.assign(1, mesher.statistics());
+  st.part_triangles.assign(1, mesher.statistics().number_of_faces);
+  return rc;
+}
+
+// The parts built and meshed concurrently, each with its own copy of the
+// field; returns what went wrong in each (empty when nothing did). The
+// statistics and the in-domain triangle count of each part are set.
+template <class Mesher, class CDT, class Field>
+std::vector<std::string>
+mesh_parts(const CDT& cdt, const Strip_plan& plan,
+           const std::vector<std::vector<std::pair<typename CDT::Point, typename CDT::Point> > >& constraints,
+           const std::vector<std::vector<std::vector<typename CDT::Point> > >& chains_of_cut,
+           const std::vector<std::vector<typename CDT::Point> >& free_points, const Field& field,
+           bool pocket_priority, std::vector<CDT>& part_cdt, std::vector<Mesh_return_code>& codes,
+           std::vector<Statistics>& statistics, std::vector<std::size_t>& triangles)
+{
+  const std::size_t parts = part_cdt.size();
+  statistics.assign(parts, Statistics());
+  triangles.assign(parts, 0);
+  std::vector<std::string> failures(parts);
+  auto mesh_part = [&](std::size_t i) {
+    try {
+      build_part(cdt, plan, i, constraints[i], chains_of_cut, free_points[i], part_cdt[i]);
+      const Field part_field = field;
+      Mesher mesher(part_cdt[i], part_field);
+      mesher.use_domain_marks();
+      mesher.set_pocket_priority(pocket_priority);
+      codes[i] = mesher.refine_mesh();
+      statistics[i] = mesher.statistics();
+      for(auto f = part_cdt[i].finite_faces_begin(); f != part_cdt[i].finite_faces_end(); ++f)
+        if(f->is_in_domain()) ++triangles[i];
+    } catch(const std::exception& e) {
+      failures[i] = e.what();
+    }
+  };
+  run_on_threads(parts, mesh_part);
+  return failures;
 }
 
 } // namespace internal
@@ -455,24 +665,7 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   const auto t_start = std::chrono::steady_clock::now();
 
   auto in_one_piece = [&](const std::string& why) {
-    // what a failed decomposition recorded is not this run's
-    const double cutting = internal::parallel_seconds_since(t_start);
-    const std::size_t cut_points = st.cut_points;
-    st = Parallel_mesh_statistics();
-    st.threads = threads;
-    st.one_piece_reason = why;
-    st.cut_points = cut_points; // the cuts made stay in the boundary
-    st.decomposition_time = cutting;
-    const auto t_mesh = std::chrono::steady_clock::now();
-    Mesher mesher(cdt, field);
-    mesher.set_seeds(seeds.begin(), seeds.end(), mark);
-    mesher.set_constraint_splitting(false);
-    mesher.set_pocket_priority(pocket_priority);
-    const Mesh_return_code rc = mesher.refine_mesh();
-    st.meshing_time = internal::parallel_seconds_since(t_mesh);
-    st.part_statistics.assign(1, mesher.statistics());
-    st.part_triangles.assign(1, mesher.statistics().number_of_faces);
-    return rc;
+    return internal::mesh_in_one_piece<Mesher>(cdt, field, seeds, mark, pocket_priority, why, t_start, st);
   };
 
   // the domain, and its boundary to the size field (as the serial mesher
@@ -490,43 +683,15 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   // the cuts: constraints split where they cross, interfaces discretised
   std::vector<std::vector<std::vector<Point> > > chains_of_cut;
   try {
-    std::vector<std::vector<Vertex_handle> > crossings;
-    for(const internal::Strip_cut& cut : plan.cuts) {
-      crossings.push_back(internal::cut_constraints(cdt, plan.axis, cut.position, on_split));
-      st.cut_points += crossings.back().size();
-      // the faces the splits made are unmarked: the next cut finds the
-      // constraints of the domain by the marks
-      Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
-    }
-    for(std::size_t k = 0; k < plan.cuts.size(); ++k) {
-      chains_of_cut.push_back(internal::interface_chains(cdt, field, plan.axis, crossings[k]));
-      for(const auto& chain : chains_of_cut.back()) st.interface_points += chain.size() - 2;
-    }
+    chains_of_cut = internal::make_cuts(cdt, field, plan, seeds, mark, on_split, st);
   } catch(const std::runtime_error& e) {
     Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), mark);
     return in_one_piece(std::string("a cut could not be made: ") + e.what());
   }
-
-  // each part's constraints and free points, by the side of the cuts
   const std::size_t parts = plan.cuts.size() + 1;
-  std::vector<std::vector<std::pair<Point, Point> > > constraints(parts);
-  for(const auto& e : internal::domain_constraints(cdt)) {
-    const Point &a = e.first->point(), &b = e.second->point();
-    const double mx = 0.5 * (CGAL::to_double(a.x()) + CGAL::to_double(b.x()));
-    const double my = 0.5 * (CGAL::to_double(a.y()) + CGAL::to_double(b.y()));
-    constraints[internal::part_of(internal::coordinate(mx, my, plan.axis), plan.cuts)].emplace_back(a, b);
-  }
-  std::vector<std::vector<Point> > free_points(parts);
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-    bool in_domain = false;
-    auto f = cdt.incident_faces(v), done = f;
-    do {
-      in_domain = in_domain || (!cdt.is_infinite(f) && f->is_in_domain());
-    } while(++f != done);
-    if(!in_domain || cdt.are_there_incident_constraints(v)) continue;
-    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
-    free_points[internal::part_of(internal::coordinate(x, y, plan.axis), plan.cuts)].push_back(v->point());
-  }
+  std::vector<std::vector<std::pair<Point, Point> > > constraints;
+  std::vector<std::vector<Point> > free_points;
+  internal::part_inputs(cdt, plan, constraints, free_points);
   st.parts = parts;
   st.axis = plan.axis;
   for(const auto& c : plan.cuts) st.cuts.push_back(c.position);
@@ -537,95 +702,34 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   const auto t_mesh = std::chrono::steady_clock::now();
   std::vector<CDT> part_cdt(parts);
   std::vector<Mesh_return_code> codes(parts, MESH_COMPLETE);
-  st.part_statistics.assign(parts, Statistics());
-  std::vector<std::string> failures(parts);
-  auto mesh_part = [&](std::size_t i) {
-    try {
-      internal::build_part(cdt, plan, i, constraints[i], chains_of_cut, free_points[i], part_cdt[i]);
-      const Field part_field = field;
-      Mesher mesher(part_cdt[i], part_field);
-      mesher.use_domain_marks();
-      mesher.set_pocket_priority(pocket_priority);
-      codes[i] = mesher.refine_mesh();
-      st.part_statistics[i] = mesher.statistics();
-    } catch(const std::exception& e) {
-      failures[i] = e.what();
-    }
-  };
-#if defined(__SANITIZE_THREAD__)
-  // Under ThreadSanitizer, one std::thread per part: TSan does not see
-  // oneTBB's synchronisation (Debian's libtbb is not instrumented) and
-  // reports its task hand-overs as races; with threads it checks the
-  // parts' own accesses, which are the same code.
-  std::vector<std::thread> workers;
-  for(std::size_t i = 0; i < parts; ++i) workers.emplace_back(mesh_part, i);
-  for(std::thread& w : workers) w.join();
-#elif defined(CGAL_LINKED_WITH_TBB)
-  // more threads than cores when asked (TBB limits its workers to the
-  // cores otherwise)
-  tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, parts);
-  tbb::task_arena arena{int(parts)};
-  arena.execute([&] { tbb::parallel_for(std::size_t(0), parts, mesh_part); });
-#else
-  for(std::size_t i = 0; i < parts; ++i) mesh_part(i);
-#endif
+  const std::vector<std::string> failures =
+    internal::mesh_parts<Mesher>(cdt, plan, constraints, chains_of_cut, free_points, field, pocket_priority, part_cdt,
+                                 codes, st.part_statistics, st.part_triangles);
   st.meshing_time = internal::parallel_seconds_since(t_mesh);
   for(const std::string& f : failures)
     if(!f.empty()) {
       // the parts cannot be trusted; the triangulation still holds the
       // input and the cuts
       part_cdt.clear();
-      st.part_statistics.clear();
       return in_one_piece("a part could not be meshed: " + f);
     }
 
-  // the merge: the parts' triangles stitched into cdt, or, where that
-  // cannot be done, their points inserted
+  // the merge: the parts' triangles stitched into cdt (or, where the parts
+  // do not fit, the domain meshed in one piece)
   const auto t_merge = std::chrono::steady_clock::now();
-  for(std::size_t i = 0; i < parts; ++i) {
-    std::size_t faces = 0;
-    for(auto f = part_cdt[i].finite_faces_begin(); f != part_cdt[i].finite_faces_end(); ++f)
-      if(f->is_in_domain()) ++faces;
-    st.part_triangles.push_back(faces);
-  }
   std::vector<Vertex_handle> new_vertices;
   st.stitched = internal::stitch_parts(cdt, part_cdt, new_vertices);
-  if(!st.stitched) {
-    // a part's boundary does not fit the domain's (a region a part did not
-    // mark, a free point outside its part): the parts cannot be trusted to
-    // cover the domain, and the triangulation is as it was
-    part_cdt.clear();
-    return in_one_piece("the parts do not fit together");
-  }
   part_cdt.clear();
+  // a part's boundary that does not fit the domain's (a region a part did
+  // not mark, a free point outside its part): the parts cannot be trusted
+  // to cover the domain, and the triangulation is as it was
+  if(!st.stitched) return in_one_piece("the parts do not fit together");
   st.merge_time = internal::parallel_seconds_since(t_merge);
-  // The seams: where the rows of triangles grown from an interface meet
-  // those grown from the boundary, triangles are worse than where one front
-  // sweeps through. The mesher's vertices within three local sizes of a cut,
-  // the interface points among them (no longer on any constraint), are
-  // smoothed, with the flips that keep the mesh constrained Delaunay; the
-  // input's vertices (free points among them) never move. The local size
-  // is only asked near the cuts: within three times the largest size on
-  // the interfaces, twice.
+  // the seams: the mesher's vertices near the cuts smoothed, with the flips
+  // that keep the mesh constrained Delaunay; the input's vertices (free
+  // points among them) never move
   const auto t_seams = std::chrono::steady_clock::now();
-  double interface_size = 0;
-  for(const auto& chains : chains_of_cut)
-    for(const auto& chain : chains)
-      for(const Point& p : chain) interface_size = (std::max)(interface_size, CGAL::to_double(field(p)));
-  std::vector<Vertex_handle> seam;
-  for(Vertex_handle v : new_vertices) {
-    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
-    const double a = internal::coordinate(x, y, plan.axis);
-    const std::size_t part = internal::part_of(a, plan.cuts);
-    for(std::size_t k : {part - 1, part}) {
-      if(k >= plan.cuts.size()) continue;
-      const double d = std::abs(a - plan.cuts[k].position);
-      if(d <= 2 * seam_width * interface_size && d <= seam_width * CGAL::to_double(field(v->point()))) {
-        seam.push_back(v);
-        break;
-      }
-    }
-  }
+  const std::vector<Vertex_handle> seam = internal::seam_vertices(new_vertices, plan, chains_of_cut, field, seam_width);
   st.seam_vertices = seam.size();
   st.seam_smoothing = internal::smooth_vertices_with<internal::Quality_moves>(cdt, seam, seam_passes);
   st.seam_time = internal::parallel_seconds_since(t_seams);

@@ -112,6 +112,143 @@ domain_constraints(const CDT& cdt)
 
 inline double coordinate(double x, double y, int axis) { return axis == 0 ? x : y; }
 
+// What a cut must keep clear of: the vertices, with the local size at each
+// and whether a constraint ends there, and the constraints, by the axis
+// coordinates of their ends, their length and their extent along the axis.
+struct Cut_obstacles
+{
+  struct Vertex_record
+  {
+    double along, h;
+    bool on_constraint;
+  };
+  std::vector<Vertex_record> vertices;
+  std::vector<std::array<double, 4> > segments;
+};
+
+template <class CDT, class Field>
+Cut_obstacles cut_obstacles(const CDT& cdt, const Field& field, int axis)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  Cut_obstacles o;
+  const auto constraints = domain_constraints(cdt);
+  std::unordered_set<Vertex_handle, Handle_hash_function> on_constraints;
+  for(const auto& c : constraints) {
+    on_constraints.insert(c.first);
+    on_constraints.insert(c.second);
+  }
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
+    o.vertices.push_back(Cut_obstacles::Vertex_record{coordinate(x, y, axis), CGAL::to_double(field(v->point())),
+                                                      on_constraints.count(v) > 0});
+  }
+  for(const auto& c : constraints) {
+    const double ax = CGAL::to_double(c.first->point().x()), ay = CGAL::to_double(c.first->point().y());
+    const double bx = CGAL::to_double(c.second->point().x()), by = CGAL::to_double(c.second->point().y());
+    const double a = coordinate(ax, ay, axis), b = coordinate(bx, by, axis);
+    o.segments.push_back({{a, b, std::sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay)), std::abs(b - a)}});
+  }
+  return o;
+}
+
+// A cut at `c`, judged: a cut may pass exactly through vertices of the
+// constraints (they are then its crossings, and no constraint is split next
+// to them into a short piece), not through free points, not along a
+// constraint; it must keep clear of the other vertices and cross the
+// constraints steeply.
+inline Strip_cut evaluate_cut(const Cut_obstacles& o, double c)
+{
+  Strip_cut cut;
+  cut.position = c;
+  cut.vertex_clearance = std::numeric_limits<double>::infinity();
+  for(const Cut_obstacles::Vertex_record& v : o.vertices) {
+    const double d = std::abs(v.along - c);
+    if(d == 0) {
+      if(!v.on_constraint) cut.vertex_clearance = 0;
+    } else {
+      cut.vertex_clearance = (std::min)(cut.vertex_clearance, v.h > 0 ? d / v.h : 0.);
+    }
+  }
+  for(const auto& s : o.segments) {
+    if(s[0] == c && s[1] == c) cut.vertex_clearance = 0; // along it
+    else if((s[0] - c) * (s[1] - c) <= 0 && s[2] > 0) cut.crossing_sine = (std::min)(cut.crossing_sine, s[3] / s[2]);
+  }
+  return cut;
+}
+
+// The predicted counts of a domain by slice along an axis from `lo`, and
+// their running sums.
+struct Slice_counts
+{
+  double lo = 0, step = 0;
+  std::vector<double> slice, cumulative; // cumulative[i]: the slices before i
+
+  // the count below the coordinate `c`
+  double below(double c) const
+  {
+    const std::size_t along = slice.size();
+    const double u = (std::min)(double(along), (std::max)(0., (c - lo) / step));
+    const std::size_t j = (std::min)(along - 1, std::size_t(u));
+    return cumulative[j] + (u - double(j)) * slice[j];
+  }
+};
+
+// The k-th of `parts` cuts: where the cumulative count reaches its share,
+// or at the nearest place within 3% of the extent and 4% of a part's count
+// that keeps half the local size clear of the vertices off it and crosses
+// the constraints at 45 degrees or more: the candidates are the places
+// every quarter slice and the constraint vertices there. Where there is
+// none, the best place found (the part meshes either way, only the quality
+// next to the interface suffers); a score of 0 or less when no place is
+// usable. `previous` is the cut before (none for the first).
+inline std::pair<Strip_cut, double> choose_cut(const Slice_counts& counts, const Cut_obstacles& obstacles, double hi,
+                                               std::size_t k, std::size_t parts, const Strip_cut* previous)
+{
+  const double lo = counts.lo, step = counts.step;
+  const std::size_t along = counts.slice.size();
+  const double total = counts.cumulative.back();
+  const double window = 0.03 * (hi - lo);
+  const std::size_t max_candidates = 256;
+  const double share = total * double(k) / double(parts);
+  const std::size_t i = std::size_t(std::upper_bound(counts.cumulative.begin(), counts.cumulative.end(), share) -
+                                    counts.cumulative.begin());
+  const std::size_t slice_index = (std::min)(along - 1, i == 0 ? 0 : i - 1);
+  const double in_slice = counts.slice[slice_index] > 0
+                            ? (share - counts.cumulative[slice_index]) / counts.slice[slice_index]
+                            : 0.5;
+  const double target = lo + (double(slice_index) + (std::min)(1., (std::max)(0., in_slice))) * step;
+  // within the window, and moving at most 4% of a part's count across
+  auto balanced_enough = [&](double c) {
+    return std::abs(c - target) <= window && std::abs(counts.below(c) - share) <= 0.04 * total / double(parts);
+  };
+  std::vector<double> candidates(1, target);
+  // by index: far from the origin, adding a quarter slice may not move c
+  const int quarters = int(std::ceil(window / (step / 4)));
+  for(int q = -quarters; q <= quarters; ++q) {
+    const double c = target + q * (step / 4);
+    if(balanced_enough(c)) candidates.push_back(c);
+  }
+  for(const Cut_obstacles::Vertex_record& v : obstacles.vertices)
+    if(v.on_constraint && balanced_enough(v.along)) candidates.push_back(v.along);
+  std::sort(candidates.begin(), candidates.end(),
+            [target](double a, double b) { return std::abs(a - target) < std::abs(b - target); });
+  if(candidates.size() > max_candidates) candidates.resize(max_candidates);
+  Strip_cut best;
+  double best_score = -1;
+  for(double c : candidates) {
+    if(!(c > lo) || !(c < hi)) continue;
+    if(previous != nullptr && !(c > previous->position + step)) continue;
+    const Strip_cut cut = evaluate_cut(obstacles, c);
+    const double score = (std::min)(cut.vertex_clearance / 0.5, cut.crossing_sine / 0.7071);
+    if(score > best_score) {
+      best = cut;
+      best_score = score;
+    }
+    if(score >= 1) break;
+  }
+  return std::make_pair(best, best_score);
+}
+
 // Plans `parts` strips (fewer when the domain is too small for them: each
 // part should hold at least `min_part_triangles`). The cuts are not made.
 template <class CDT, class Field>
@@ -136,125 +273,31 @@ Strip_plan plan_strips(const CDT& cdt, const Field& field, std::size_t parts, do
   const double olo = plan.axis == 0 ? y0 : x0, ohi = plan.axis == 0 ? y1 : x1;
   const std::size_t along = samples_along;
   const std::size_t across = (std::max)(std::size_t(16), (std::min)(along, std::size_t(double(along) * (ohi - olo) / (hi - lo)) + 1));
-  const std::vector<double> slice = predicted_triangles_by_slice(cdt, field, plan.axis, lo, hi, olo, ohi, along, across);
-  double total = 0;
-  for(double c : slice) total += c;
+  Slice_counts counts;
+  counts.lo = lo;
+  counts.step = (hi - lo) / double(along);
+  counts.slice = predicted_triangles_by_slice(cdt, field, plan.axis, lo, hi, olo, ohi, along, across);
+  counts.cumulative.assign(along + 1, 0.);
+  for(std::size_t i = 0; i < along; ++i) counts.cumulative[i + 1] = counts.cumulative[i] + counts.slice[i];
+  const double total = counts.cumulative.back();
   plan.estimated_total = total;
   // in doubles: a tiny size predicts more triangles than a size_t holds
   const double fitting = std::floor(total / min_part_triangles);
   if(!(fitting >= 2)) return plan;
   if(fitting < double(parts)) parts = std::size_t(fitting);
 
-  // the vertices and constraints a cut must keep clear of, with the local
-  // size at each vertex
-  typedef typename CDT::Vertex_handle Vertex_handle;
-  const auto constraints = domain_constraints(cdt);
-  std::unordered_set<Vertex_handle, Handle_hash_function> on_constraints;
-  for(const auto& c : constraints) {
-    on_constraints.insert(c.first);
-    on_constraints.insert(c.second);
-  }
-  struct Vertex_record
-  {
-    double along, h;
-    bool on_constraint;
-  };
-  std::vector<Vertex_record> vertices;
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
-    vertices.push_back(Vertex_record{coordinate(x, y, plan.axis), CGAL::to_double(field(v->point())),
-                                     on_constraints.count(v) > 0});
-  }
-  std::vector<std::array<double, 4> > segments; // axis coordinates of the ends, length, |axis extent|
-  for(const auto& c : constraints) {
-    const double ax = CGAL::to_double(c.first->point().x()), ay = CGAL::to_double(c.first->point().y());
-    const double bx = CGAL::to_double(c.second->point().x()), by = CGAL::to_double(c.second->point().y());
-    const double a = coordinate(ax, ay, plan.axis), b = coordinate(bx, by, plan.axis);
-    segments.push_back({{a, b, std::sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay)), std::abs(b - a)}});
-  }
-  // A cut may pass exactly through vertices of the constraints (they are
-  // then its crossings, and no constraint is split next to them into a
-  // short piece), not through free points, not along a constraint; it must
-  // keep clear of the other vertices and cross the constraints steeply.
-  auto evaluate = [&](double c) {
-    Strip_cut cut;
-    cut.position = c;
-    cut.vertex_clearance = std::numeric_limits<double>::infinity();
-    for(const Vertex_record& v : vertices) {
-      const double d = std::abs(v.along - c);
-      if(d == 0) {
-        if(!v.on_constraint) cut.vertex_clearance = 0;
-      } else {
-        cut.vertex_clearance = (std::min)(cut.vertex_clearance, v.h > 0 ? d / v.h : 0.);
-      }
-    }
-    for(const auto& s : segments) {
-      if(s[0] == c && s[1] == c) cut.vertex_clearance = 0; // along it
-      else if((s[0] - c) * (s[1] - c) <= 0 && s[2] > 0) cut.crossing_sine = (std::min)(cut.crossing_sine, s[3] / s[2]);
-    }
-    return cut;
-  };
-  // Each cut where the cumulative count reaches its share, or at the
-  // nearest place within 3% of the extent and 4% of a part's count that
-  // keeps half the local size clear of the vertices off it and crosses
-  // the constraints at 45 degrees or more: the candidates are the places
-  // every quarter slice and the constraint vertices there. Where there is
-  // none, the best place found (the part meshes either way, only the
-  // quality next to the interface suffers).
-  const double step = (hi - lo) / double(along);
-  std::vector<double> cumulative(along + 1, 0.);
-  for(std::size_t i = 0; i < along; ++i) cumulative[i + 1] = cumulative[i] + slice[i];
-  const double window = 0.03 * (hi - lo);
-  const std::size_t max_candidates = 256;
+  const Cut_obstacles obstacles = cut_obstacles(cdt, field, plan.axis);
   for(std::size_t k = 1; k < parts; ++k) {
-    const double share = total * double(k) / double(parts);
-    const std::size_t i = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), share) - cumulative.begin());
-    const std::size_t slice_index = (std::min)(along - 1, i == 0 ? 0 : i - 1);
-    const double in_slice = slice[slice_index] > 0 ? (share - cumulative[slice_index]) / slice[slice_index] : 0.5;
-    const double target = lo + (double(slice_index) + (std::min)(1., (std::max)(0., in_slice))) * step;
-    // within the window, and moving at most 4% of a part's count across
-    auto count_below = [&](double c) {
-      const double u = (std::min)(double(along), (std::max)(0., (c - lo) / step));
-      const std::size_t j = (std::min)(along - 1, std::size_t(u));
-      return cumulative[j] + (u - double(j)) * slice[j];
-    };
-    auto balanced_enough = [&](double c) {
-      return std::abs(c - target) <= window && std::abs(count_below(c) - share) <= 0.04 * total / double(parts);
-    };
-    std::vector<double> candidates(1, target);
-    // by index: far from the origin, adding a quarter slice may not move c
-    const int quarters = int(std::ceil(window / (step / 4)));
-    for(int q = -quarters; q <= quarters; ++q) {
-      const double c = target + q * (step / 4);
-      if(balanced_enough(c)) candidates.push_back(c);
-    }
-    for(const Vertex_record& v : vertices)
-      if(v.on_constraint && balanced_enough(v.along)) candidates.push_back(v.along);
-    std::sort(candidates.begin(), candidates.end(),
-              [target](double a, double b) { return std::abs(a - target) < std::abs(b - target); });
-    if(candidates.size() > max_candidates) candidates.resize(max_candidates);
-    Strip_cut best;
-    double best_score = -1;
-    for(double c : candidates) {
-      if(!(c > lo) || !(c < hi)) continue;
-      if(!plan.cuts.empty() && !(c > plan.cuts.back().position + step)) continue;
-      const Strip_cut cut = evaluate(c);
-      const double score = (std::min)(cut.vertex_clearance / 0.5, cut.crossing_sine / 0.7071);
-      if(score > best_score) {
-        best = cut;
-        best_score = score;
-      }
-      if(score >= 1) break;
-    }
-    if(best_score > 0) plan.cuts.push_back(best);
+    const auto chosen = choose_cut(counts, obstacles, hi, k, parts, plan.cuts.empty() ? nullptr : &plan.cuts.back());
+    if(chosen.second > 0) plan.cuts.push_back(chosen.first);
   }
   // the predicted count of each part, from the slices
   plan.estimated.assign(plan.cuts.size() + 1, 0.);
   for(std::size_t i = 0; i < along; ++i) {
-    const double centre = lo + (double(i) + 0.5) * step;
+    const double centre = lo + (double(i) + 0.5) * counts.step;
     std::size_t part = 0;
     while(part < plan.cuts.size() && plan.cuts[part].position < centre) ++part;
-    plan.estimated[part] += slice[i];
+    plan.estimated[part] += counts.slice[i];
   }
   return plan;
 }
