@@ -80,6 +80,7 @@ Mesh_quality mesh_quality(const CDT& cdt)
   double sum = 0;
   std::size_t above = 0, sharp_angles = 0;
   std::vector<double> ratios;
+  ratios.reserve(cdt.number_of_faces());
   const double to_degrees = 180 / std::acos(-1.);
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if(!f->is_in_domain()) continue;
@@ -114,11 +115,19 @@ Mesh_quality mesh_quality(const CDT& cdt)
     q.mean_radius_ratio = sum / double(q.number_of_triangles);
     q.share_above_0_9 = double(above) / double(q.number_of_triangles);
     q.share_angles_below_30 = double(sharp_angles) / double(3 * q.number_of_triangles);
-    std::sort(ratios.begin(), ratios.end());
-    auto percentile = [&](double p) { return ratios[std::size_t(p * double(ratios.size() - 1))]; };
-    q.radius_ratio_p1 = percentile(0.01);
-    q.radius_ratio_p5 = percentile(0.05);
-    q.radius_ratio_median = percentile(0.5);
+    // the order statistics by selection, each in the part above the one
+    // before (a sort of a million ratios took a tenth of a second)
+    auto percentile = [&](double p, std::vector<double>::iterator from) {
+      const auto at = ratios.begin() + std::ptrdiff_t(p * double(ratios.size() - 1));
+      std::nth_element(from, at, ratios.end());
+      return at;
+    };
+    const auto p1 = percentile(0.01, ratios.begin());
+    const auto p5 = percentile(0.05, p1);
+    const auto median = percentile(0.5, p5);
+    q.radius_ratio_p1 = *p1;
+    q.radius_ratio_p5 = *p5;
+    q.radius_ratio_median = *median;
   } else {
     q.min_radius_ratio = 0;
     q.min_angle_degrees = 0;
