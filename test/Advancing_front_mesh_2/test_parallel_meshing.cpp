@@ -14,6 +14,7 @@
 #include <CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -225,4 +226,52 @@ AFM_TEST_CASE(test_parallel_segments_across_several_cuts)
   AFM_CHECK_MSG(r.st.parts == 3, r.st.one_piece_reason);
   AFM_CHECK_MSG(r.st.cut_points == 4, r.st.cut_points << " cut points");
   AFM_CHECK(r.st.stitched);
+}
+
+namespace {
+
+// Whether the time stamps of the items of `c` (when they have them) are
+// distinct: CGAL orders handles by them.
+template <class Container>
+bool distinct_time_stamps(const Container& c)
+{
+  if constexpr(AFM::internal::has_time_stamps<Container>()) {
+    std::vector<std::size_t> stamps;
+    for(auto it = c.begin(); it != c.end(); ++it) stamps.push_back(it->time_stamp());
+    std::sort(stamps.begin(), stamps.end());
+    return std::adjacent_find(stamps.begin(), stamps.end()) == stamps.end();
+  } else {
+    return true;
+  }
+}
+
+} // namespace
+
+// The parts' faces and vertices are spliced into the triangulation with
+// their time stamps: they stay distinct after the merge, after insertions
+// that reuse freed slots and take new ones, and after a second parallel
+// meshing of the same triangulation.
+AFM_TEST_CASE(test_parallel_time_stamps_distinct)
+{
+  const Poly_data in = afm_geometry::many_holes(20, 3);
+  const AFM::Uniform_sizing_field_2<Epick> size(0.02);
+  CDT cdt;
+  afm_test::build_cdt(cdt, in);
+  const auto seeds = afm_test::seeds_of<CDT>(in);
+  AFM::Parallel_mesh_statistics st;
+  AFM::mesh_in_parallel_2(cdt, seeds.begin(), seeds.end(), size, false, 2, st, true,
+                          AFM::internal::No_split_callback());
+  AFM_CHECK_MSG(st.parts == 2 && st.stitched, st.one_piece_reason);
+  AFM_CHECK(distinct_time_stamps(cdt.tds().faces()));
+  AFM_CHECK(distinct_time_stamps(cdt.tds().vertices()));
+  for(int i = 0; i < 500; ++i) cdt.insert(CDT::Point(0.001 + 0.998 * (i % 25) / 25., 0.001 + 0.998 * (i / 25) / 20.));
+  AFM_CHECK(cdt.is_valid());
+  AFM_CHECK(distinct_time_stamps(cdt.tds().faces()));
+  AFM_CHECK(distinct_time_stamps(cdt.tds().vertices()));
+  AFM::mesh_in_parallel_2(cdt, seeds.begin(), seeds.end(), size, false, 2, st, true,
+                          AFM::internal::No_split_callback());
+  AFM_CHECK_MSG(st.parts == 2 && st.stitched, st.one_piece_reason);
+  AFM_CHECK(cdt.is_valid());
+  AFM_CHECK(distinct_time_stamps(cdt.tds().faces()));
+  AFM_CHECK(distinct_time_stamps(cdt.tds().vertices()));
 }

@@ -22,6 +22,7 @@
 #include <CGAL/Delaunay_mesh_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Handle_hash_function.h>
+#include <CGAL/Has_timestamp.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -128,6 +129,88 @@ namespace internal {
 inline double parallel_seconds_since(std::chrono::steady_clock::time_point t)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Time stamps across spliced containers. CGAL orders (and may hash) the
+// handles of items that have time stamps by them, so the stamps in one
+// container must be distinct; every stamp in a container is below its
+// counter, the stamp its next new item gets (a reused slot keeps its
+// stamp). The parts' items are spliced into cdt's containers with their
+// stamps, so each part counts in a range of its own above cdt's counter
+// (2^40 stamps: more items than any memory holds), and cdt's counter is
+// raised above all the ranges after the merge.
+constexpr std::size_t time_stamp_range = std::size_t(1) << 40;
+
+template <class Container>
+constexpr bool has_time_stamps()
+{
+  return CGAL::internal::Has_timestamp<typename Container::value_type>::value;
+}
+
+// The counter of `c`: the stamp of a new item in a copy of it, whose free
+// slots are fresh (`c` is the input triangulation's container: small).
+template <class Container>
+std::size_t time_stamp_counter(const Container& c)
+{
+  if constexpr(has_time_stamps<Container>()) {
+    Container copy(c);
+    return copy.emplace()->time_stamp();
+  } else {
+    return 0;
+  }
+}
+
+// Raises the counter of `c` to at least `stamp` + 1: a slot is given the
+// stamp and freed, and taken again (the free list's head), which makes the
+// container count on from above it.
+template <class Container>
+void raise_time_stamp_counter(Container& c, std::size_t stamp)
+{
+  if constexpr(has_time_stamps<Container>()) {
+    auto it = c.emplace();
+    it->set_time_stamp(stamp);
+    c.erase(it);
+    it = c.emplace();
+    CGAL_assertion(it->time_stamp() == stamp);
+    c.erase(it);
+  }
+}
+
+// The first stamp of part `k`'s range, given cdt's counters.
+struct Time_stamp_bases
+{
+  std::size_t faces = 0, vertices = 0;
+  std::size_t of_faces(std::size_t k) const { return faces + k * time_stamp_range; }
+  std::size_t of_vertices(std::size_t k) const { return vertices + k * time_stamp_range; }
+};
+
+template <class CDT>
+Time_stamp_bases time_stamp_bases(const CDT& cdt)
+{
+  return Time_stamp_bases{time_stamp_counter(cdt.tds().faces()), time_stamp_counter(cdt.tds().vertices())};
+}
+
+// The items of `c` made so far (before it counts in its range) are given
+// stamps from the middle of the range.
+template <class Container>
+void restamp_from_middle(Container& c, std::size_t base)
+{
+  if constexpr(has_time_stamps<Container>()) {
+    std::size_t stamp = base + time_stamp_range / 2;
+    for(auto it = c.begin(); it != c.end(); ++it) it->set_time_stamp(stamp++);
+  }
+}
+
+// A fresh part counts in range `k`; the infinite vertex and the face that
+// the triangulation's constructor made are given stamps in the range too
+// (they end in cdt's containers, live or freed, with the part's items).
+template <class CDT>
+void start_time_stamps(CDT& part, const Time_stamp_bases& bases, std::size_t k)
+{
+  restamp_from_middle(part.tds().faces(), bases.of_faces(k));
+  restamp_from_middle(part.tds().vertices(), bases.of_vertices(k));
+  raise_time_stamp_counter(part.tds().faces(), bases.of_faces(k));
+  raise_time_stamp_counter(part.tds().vertices(), bases.of_vertices(k));
 }
 
 // One part of a decomposed domain in a triangulation of its own: the
@@ -314,106 +397,124 @@ bool parts_fit(const CDT& cdt, const std::vector<CDT>& parts, const Stitch_table
   return true;
 }
 
-// Copies the in-domain faces of `part` into `cdt` (whose domain faces are
-// gone), linked to each other as they were, to the faces outside the domain
-// across its boundary edges, and across the interfaces to the faces of the
-// parts copied before (`open_interfaces`: the interface edges whose other
-// side is not copied yet), released; the joined interface edges are
-// appended to `seams`, the vertices made to `made`. The part is cleared.
+// Moves the in-domain faces of `part` into `cdt` (whose domain faces are
+// gone) without copying them: the part's vertices that `cdt` (or a part
+// spliced before) has at their point give way to those, the part's faces
+// outside its domain are deleted, and its containers are spliced into
+// cdt's (`Compact_container::merge()`, a matter of blocks, not items).
+// The faces stay linked to each other as they were; across the domain's
+// boundary edges they are linked to the faces outside, and across the
+// interfaces to the faces of the parts spliced before (`open_interfaces`:
+// the interface edges whose other side is not spliced yet), released. The
+// joined interface edges are appended to `seams`, the part's vertices
+// that stay to `made`. The part is left empty.
 template <class CDT, class Open_interfaces>
-void copy_part(CDT& cdt, CDT& part, Stitch_tables<CDT>& tables, Open_interfaces& open_interfaces,
-               std::vector<typename CDT::Edge>& seams, std::vector<typename CDT::Vertex_handle>& made)
+void splice_part(CDT& cdt, CDT& part, Stitch_tables<CDT>& tables, Open_interfaces& open_interfaces,
+                 std::vector<typename CDT::Edge>& seams, std::vector<typename CDT::Vertex_handle>& made)
 {
   typedef typename CDT::Point Point;
   typedef typename CDT::Vertex_handle Vertex_handle;
   typedef typename CDT::Face_handle Face_handle;
   typedef std::pair<Point, Point> Point_pair;
-  // the part's vertices by address, in flat tables (node-based
-  // maps cost a third of the merge at a million triangles)
-  Flat_hash_map<const void*, Vertex_handle> vertex_of(nullptr);
-  vertex_of.reserve(part.number_of_vertices());
+  // the vertices that give way, and those that stay; an interface point
+  // that stays is found by the part on the other side
+  std::vector<std::pair<Vertex_handle, Vertex_handle> > replaced;
+  std::vector<Vertex_handle> kept;
   for(auto v = part.finite_vertices_begin(); v != part.finite_vertices_end(); ++v) {
     auto it = tables.vertex_at.find(v->point());
-    Vertex_handle w;
     if(it != tables.vertex_at.end()) {
-      w = it->second;
+      replaced.emplace_back(v, it->second);
+      continue;
+    }
+    if(part.are_there_incident_constraints(v)) tables.vertex_at.emplace(v->point(), v);
+    kept.push_back(v);
+  }
+  std::vector<Face_handle> around;
+  for(const auto& r : replaced) {
+    around.clear();
+    auto fc = part.incident_faces(r.first), done = fc;
+    do {
+      around.push_back(fc);
+    } while(++fc != done);
+    for(Face_handle f : around) f->set_vertex(f->index(r.first), r.second);
+  }
+  // every vertex of an in-domain face points to one (the vertices that
+  // give way pointed to faces of their own part); the open edges
+  std::vector<Face_handle> dropped;
+  std::vector<typename CDT::Edge> open;
+  for(auto f = part.all_faces_begin(); f != part.all_faces_end(); ++f) {
+    if(part.is_infinite(f) || !f->is_in_domain()) {
+      dropped.push_back(f);
+      continue;
+    }
+    for(int k = 0; k < 3; ++k) {
+      f->vertex(k)->set_face(f);
+      const Face_handle n = f->neighbor(k);
+      if(part.is_infinite(n) || !n->is_in_domain()) open.emplace_back(f, k);
+    }
+  }
+  // the vertices no in-domain face uses (none when the parts fit) go too
+  std::size_t used = 0;
+  for(Vertex_handle v : kept) {
+    if(!part.is_infinite(v->face()) && v->face()->is_in_domain()) {
+      kept[used++] = v;
     } else {
-      w = cdt.tds().create_vertex();
-      w->set_point(v->point());
-      made.push_back(w);
-      // an interface point: the part on the other side finds it
-      if(part.are_there_incident_constraints(v)) tables.vertex_at.emplace(v->point(), w);
-    }
-    vertex_of.insert(&*v, w);
-  }
-  // Each in-domain face's image takes the face's neighbours, and the face
-  // keeps its image in its neighbour slot 0 (the parts are not used again),
-  // so that the images link up without a table of faces.
-  std::vector<Face_handle> images;
-  images.reserve(part.number_of_faces());
-  for(auto f = part.finite_faces_begin(); f != part.finite_faces_end(); ++f) {
-    if(!f->is_in_domain()) continue;
-    const Face_handle g = cdt.tds().create_face(*vertex_of.find(&*f->vertex(0)), *vertex_of.find(&*f->vertex(1)),
-                                                *vertex_of.find(&*f->vertex(2)));
-    g->set_in_domain(true);
-    for(int k = 0; k < 3; ++k) {
-      g->set_constraint(k, f->is_constrained(k));
-      g->set_neighbor(k, f->neighbor(k));
-      g->vertex(k)->set_face(g);
-    }
-    f->set_neighbor(0, g);
-    images.push_back(g);
-  }
-  for(const Face_handle g : images) {
-    for(int k = 0; k < 3; ++k) {
-      const Face_handle n = g->neighbor(k); // still the part's face
-      if(!part.is_infinite(n) && n->is_in_domain()) {
-        g->set_neighbor(k, n->neighbor(0));
-        continue;
-      }
-      Point_pair e(g->vertex(CDT::ccw(k))->point(), g->vertex(CDT::cw(k))->point());
-      auto out = tables.outside.find(e);
-      if(out != tables.outside.end()) {
-        g->set_neighbor(k, out->second.first);
-        out->second.first->set_neighbor(out->second.second, g);
-        continue;
-      }
-      // an interface edge: joined to the other part's face, released
-      Point_pair twin(e.second, e.first);
-      auto other = open_interfaces.find(twin);
-      if(other == open_interfaces.end()) {
-        g->set_neighbor(k, Face_handle());
-        open_interfaces.emplace(e, std::make_pair(g, k));
-        continue;
-      }
-      const Face_handle h = other->second.first;
-      const int j = other->second.second;
-      g->set_neighbor(k, h);
-      h->set_neighbor(j, g);
-      g->set_constraint(k, false);
-      h->set_constraint(j, false);
-      seams.emplace_back(g, k);
-      open_interfaces.erase(other);
+      auto it = tables.vertex_at.find(v->point());
+      if(it != tables.vertex_at.end() && it->second == v) tables.vertex_at.erase(it);
+      part.tds().delete_vertex(v);
     }
   }
-  // its triangles are in cdt now: the part's memory goes back before the
-  // next part is copied (the peak is the mesh and one part, not two meshes)
-  part.clear();
+  kept.resize(used);
+  for(Face_handle f : dropped) part.tds().delete_face(f);
+  for(const auto& r : replaced) part.tds().delete_vertex(r.first);
+  part.tds().delete_vertex(part.infinite_vertex());
+  cdt.tds().faces().merge(part.tds().faces());
+  cdt.tds().vertices().merge(part.tds().vertices());
+  made.insert(made.end(), kept.begin(), kept.end());
+  for(const typename CDT::Edge& o : open) {
+    const Face_handle g = o.first;
+    const int k = o.second;
+    Point_pair e(g->vertex(CDT::ccw(k))->point(), g->vertex(CDT::cw(k))->point());
+    auto out = tables.outside.find(e);
+    if(out != tables.outside.end()) {
+      g->set_neighbor(k, out->second.first);
+      out->second.first->set_neighbor(out->second.second, g);
+      continue;
+    }
+    // an interface edge: joined to the other part's face, released
+    Point_pair twin(e.second, e.first);
+    auto other = open_interfaces.find(twin);
+    if(other == open_interfaces.end()) {
+      g->set_neighbor(k, Face_handle());
+      open_interfaces.emplace(e, std::make_pair(g, k));
+      continue;
+    }
+    const Face_handle h = other->second.first;
+    const int j = other->second.second;
+    g->set_neighbor(k, h);
+    h->set_neighbor(j, g);
+    g->set_constraint(k, false);
+    h->set_constraint(j, false);
+    seams.emplace_back(g, k);
+    open_interfaces.erase(other);
+  }
 }
 
-// The merge without a search: the in-domain faces of `cdt` are replaced by
-// the parts' in-domain faces, linked to each other within a part as they
-// were, to the faces outside the domain across its boundary edges (which
-// the parts share with `cdt`: they were made from its constraints), and to
-// the other part's faces across the interfaces, which are released (not
-// constrained); Lawson's flips from the interface edges then make the mesh
-// constrained Delaunay across them. Everything is matched before anything
-// changes: false (and `cdt` and the parts as they were) when the parts do
-// not fit (`parts_fit()`; the caller meshes in one piece instead). Each
-// part is cleared once its triangles are copied. The vertices made are
-// appended to `made`.
+// The merge without a search and without a copy: the in-domain faces of
+// `cdt` are replaced by the parts' in-domain faces (`splice_part()`),
+// linked to each other within a part as they were, to the faces outside the
+// domain across its boundary edges (which the parts share with `cdt`: they
+// were made from its constraints), and to the other part's faces across
+// the interfaces, which are released (not constrained); Lawson's flips from
+// the interface edges then make the mesh constrained Delaunay across them.
+// Everything is matched before anything changes: false (and `cdt` and the
+// parts as they were) when the parts do not fit (`parts_fit()`; the caller
+// meshes in one piece instead). The parts, which counted their time stamps
+// in the ranges of `bases` (`start_time_stamps()`), are left empty; the
+// vertices they brought are appended to `made`.
 template <class CDT>
-bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::Vertex_handle>& made)
+bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, const Time_stamp_bases& bases,
+                  std::vector<typename CDT::Vertex_handle>& made)
 {
   typedef typename CDT::Point Point;
   typedef typename CDT::Face_handle Face_handle;
@@ -422,7 +523,9 @@ bool stitch_parts(CDT& cdt, std::vector<CDT>& parts, std::vector<typename CDT::V
   for(Face_handle f : tables.domain_faces) cdt.tds().delete_face(f);
   std::unordered_map<std::pair<Point, Point>, std::pair<Face_handle, int>, Point_pair_hash<Point> > open_interfaces;
   std::vector<typename CDT::Edge> seams;
-  for(CDT& part : parts) copy_part(cdt, part, tables, open_interfaces, seams, made);
+  for(CDT& part : parts) splice_part(cdt, part, tables, open_interfaces, seams, made);
+  raise_time_stamp_counter(cdt.tds().faces(), bases.of_faces(parts.size()));
+  raise_time_stamp_counter(cdt.tds().vertices(), bases.of_vertices(parts.size()));
   CGAL_assertion(open_interfaces.empty());
   lawson_flips(cdt, seams, [](Face_handle, Face_handle) {});
   return true;
@@ -575,7 +678,8 @@ mesh_parts(const CDT& cdt, const Strip_plan& plan,
            const std::vector<std::vector<std::vector<typename CDT::Point> > >& chains_of_cut,
            const std::vector<std::vector<typename CDT::Point> >& free_points, const Field& field,
            bool pocket_priority, std::vector<CDT>& part_cdt, std::vector<Mesh_return_code>& codes,
-           std::vector<Statistics>& statistics, std::vector<std::size_t>& triangles)
+           const Time_stamp_bases& bases, std::vector<Statistics>& statistics,
+           std::vector<std::size_t>& triangles)
 {
   const std::size_t parts = part_cdt.size();
   statistics.assign(parts, Statistics());
@@ -583,6 +687,7 @@ mesh_parts(const CDT& cdt, const Strip_plan& plan,
   std::vector<std::string> failures(parts);
   auto mesh_part = [&](std::size_t i) {
     try {
+      start_time_stamps(part_cdt[i], bases, i);
       build_part(cdt, plan, i, constraints[i], chains_of_cut, free_points[i], part_cdt[i]);
       const Field part_field = field;
       Mesher mesher(part_cdt[i], part_field);
@@ -702,9 +807,10 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   const auto t_mesh = std::chrono::steady_clock::now();
   std::vector<CDT> part_cdt(parts);
   std::vector<Mesh_return_code> codes(parts, MESH_COMPLETE);
+  const internal::Time_stamp_bases stamps = internal::time_stamp_bases(cdt);
   const std::vector<std::string> failures =
     internal::mesh_parts<Mesher>(cdt, plan, constraints, chains_of_cut, free_points, field, pocket_priority, part_cdt,
-                                 codes, st.part_statistics, st.part_triangles);
+                                 codes, stamps, st.part_statistics, st.part_triangles);
   st.meshing_time = internal::parallel_seconds_since(t_mesh);
   for(const std::string& f : failures)
     if(!f.empty()) {
@@ -718,7 +824,7 @@ Mesh_return_code mesh_in_parallel_2(CDT& cdt, InputIterator seeds_begin, InputIt
   // do not fit, the domain meshed in one piece)
   const auto t_merge = std::chrono::steady_clock::now();
   std::vector<Vertex_handle> new_vertices;
-  st.stitched = internal::stitch_parts(cdt, part_cdt, new_vertices);
+  st.stitched = internal::stitch_parts(cdt, part_cdt, stamps, new_vertices);
   part_cdt.clear();
   // a part's boundary that does not fit the domain's (a region a part did
   // not mark, a free point outside its part): the parts cannot be trusted
