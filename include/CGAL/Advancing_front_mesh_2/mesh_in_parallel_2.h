@@ -147,14 +147,22 @@ constexpr bool has_time_stamps()
   return CGAL::internal::Has_timestamp<typename Container::value_type>::value;
 }
 
-// The counter of `c`: the stamp of a new item in a copy of it, whose free
-// slots are fresh (`c` is the input triangulation's container: small).
+// The counter of `c`: a slot is taken and marked as never used, so that
+// taking it again gives it the counter's stamp (the counter moves on by
+// one); it is then freed, marked as never used again.
 template <class Container>
-std::size_t time_stamp_counter(const Container& c)
+std::size_t time_stamp_counter(Container& c)
 {
   if constexpr(has_time_stamps<Container>()) {
-    Container copy(c);
-    return copy.emplace()->time_stamp();
+    const std::size_t fresh = std::size_t(-1);
+    auto it = c.emplace();
+    it->set_time_stamp(fresh);
+    c.erase(it);
+    it = c.emplace();
+    const std::size_t stamp = it->time_stamp();
+    it->set_time_stamp(fresh);
+    c.erase(it);
+    return stamp;
   } else {
     return 0;
   }
@@ -162,7 +170,9 @@ std::size_t time_stamp_counter(const Container& c)
 
 // Raises the counter of `c` to at least `stamp` + 1: a slot is given the
 // stamp and freed, and taken again (the free list's head), which makes the
-// container count on from above it.
+// container count on from above it when the item's constructor leaves the
+// stamp of a reused slot alone (CGAL's face and vertex bases do); throws
+// std::runtime_error otherwise (the caller then meshes in one piece).
 template <class Container>
 void raise_time_stamp_counter(Container& c, std::size_t stamp)
 {
@@ -171,8 +181,11 @@ void raise_time_stamp_counter(Container& c, std::size_t stamp)
     it->set_time_stamp(stamp);
     c.erase(it);
     it = c.emplace();
-    CGAL_assertion(it->time_stamp() == stamp);
+    const bool kept = it->time_stamp() == stamp;
     c.erase(it);
+    if(!kept)
+      throw std::runtime_error("the triangulation's items reset their time stamps when made: "
+                               "the parts cannot be spliced");
   }
 }
 
@@ -185,7 +198,7 @@ struct Time_stamp_bases
 };
 
 template <class CDT>
-Time_stamp_bases time_stamp_bases(const CDT& cdt)
+Time_stamp_bases time_stamp_bases(CDT& cdt)
 {
   return Time_stamp_bases{time_stamp_counter(cdt.tds().faces()), time_stamp_counter(cdt.tds().vertices())};
 }
@@ -416,6 +429,11 @@ void splice_part(CDT& cdt, CDT& part, Stitch_tables<CDT>& tables, Open_interface
   typedef typename CDT::Vertex_handle Vertex_handle;
   typedef typename CDT::Face_handle Face_handle;
   typedef std::pair<Point, Point> Point_pair;
+  // a part without faces brings nothing (parts_fit() saw no domain face)
+  if(part.dimension() < 2) {
+    part.clear();
+    return;
+  }
   // the vertices that give way, and those that stay; an interface point
   // that stays is found by the part on the other side
   std::vector<std::pair<Vertex_handle, Vertex_handle> > replaced;

@@ -60,16 +60,25 @@ inline char* text_format_uint(char* p, std::uint64_t v)
 // by text_format_*(): at a million triangles, iostream's formatting of
 // doubles with max_digits10 digits (glibc's exact printf) and its per-call
 // sentries took a second, a quarter of the whole run. The buffer goes to
-// the stream when full and by flush() (the destructor flushes too, but a
-// writer calls flush() so that the stream's state is final when it
-// returns).
+// the stream when full and by flush(); a writer calls flush() so that the
+// stream's state is final when it returns (the destructor flushes too, and
+// swallows an exception of a stream with exceptions() set, which must not
+// leave a destructor).
 class Text_output
 {
 public:
   explicit Text_output(std::ostream& os) : os_(os) {}
   Text_output(const Text_output&) = delete;
   Text_output& operator=(const Text_output&) = delete;
-  ~Text_output() { flush(); }
+  // a writer flushes before it returns; here only what an exception left
+  ~Text_output()
+  {
+    try {
+      flush();
+    } catch(...) {
+      // the stream reports the failure by its state
+    }
+  }
 
   Text_output& put(char c)
   {
@@ -113,8 +122,9 @@ public:
 
   void flush()
   {
-    if(used_ > 0) os_.write(buf_.data(), std::streamsize(used_));
-    used_ = 0;
+    const std::size_t n = used_;
+    used_ = 0; // not written again when the stream throws
+    if(n > 0) os_.write(buf_.data(), std::streamsize(n));
   }
 
 private:
