@@ -141,6 +141,17 @@ inline double parallel_seconds_since(std::chrono::steady_clock::time_point t)
 // raised above all the ranges after the merge.
 constexpr std::size_t time_stamp_range = std::size_t(1) << 40;
 
+// A stamp written just before its item is erased is a store the compiler
+// may drop (GCC's lifetime dead-store elimination: the item's life ends
+// at the erase; at -O2 the trick below then failed and every release run
+// fell back to one piece). An opaque call that could read the item keeps
+// the store.
+inline void keep_stores_to(const void* item)
+{
+  static void (*volatile opaque)(const void*) = [](const void*) {};
+  opaque(item);
+}
+
 template <class Container>
 constexpr bool has_time_stamps()
 {
@@ -157,10 +168,12 @@ std::size_t time_stamp_counter(Container& c)
     const std::size_t fresh = std::size_t(-1);
     auto it = c.emplace();
     it->set_time_stamp(fresh);
+    keep_stores_to(&*it);
     c.erase(it);
     it = c.emplace();
     const std::size_t stamp = it->time_stamp();
     it->set_time_stamp(fresh);
+    keep_stores_to(&*it);
     c.erase(it);
     return stamp;
   } else {
@@ -179,6 +192,7 @@ void raise_time_stamp_counter(Container& c, std::size_t stamp)
   if constexpr(has_time_stamps<Container>()) {
     auto it = c.emplace();
     it->set_time_stamp(stamp);
+    keep_stores_to(&*it);
     c.erase(it);
     it = c.emplace();
     const bool kept = it->time_stamp() == stamp;
