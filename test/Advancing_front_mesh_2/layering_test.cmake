@@ -36,6 +36,7 @@ set(AFM_LAYERS
   "0 CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h"
   "0 CGAL/Advancing_front_mesh_2/refine_to_minimum_angle_2.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Strip_decomposition_2.h"
+  "0 CGAL/Advancing_front_mesh_2/internal/Part_splicing_2.h"
   # L1: the search structures (models of the two concepts)
   "1 CGAL/Advancing_front_mesh_2/internal/Dynamic_point_quadtree.h"
   "1 CGAL/Advancing_front_mesh_2/internal/Lifted_circle_octree.h"
