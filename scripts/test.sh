@@ -8,7 +8,8 @@
 # ThreadSanitizer (a third build of their executable alone); the mesher's tests with the other search
 # structures (Kd_tree, brute force) in the sanitizer build, which is also a
 # Debug build with CGAL's assertions on, and the consumer project of the
-# installed package (a build test) in the plain Debug build.
+# installed package (a build test) and the threaded tests compiled with -O2
+# -DNDEBUG (as users build) in the plain Debug build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # GDAL (libgdal-dev, and gdal-bin's ogr2ogr to make test inputs) is optional for users; the tests install it
@@ -17,11 +18,11 @@ bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gms
   python3-pytest libgdal-dev gdal-bin
 jobs=${AFM_JOBS:-2}
 for variant in debug asan; do
-  sanitize=OFF models=OFF package=ON
-  [ "$variant" = asan ] && sanitize=ON models=ON package=OFF
+  sanitize=OFF models=OFF package=ON optimised=ON
+  [ "$variant" = asan ] && sanitize=ON models=ON package=OFF optimised=OFF
   echo "=== $variant build ==="
   cmake -S . -B "build/$variant" -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE=$sanitize \
-    -DAFM_TEST_SEARCH_MODELS=$models -DAFM_TEST_PACKAGE=$package > /dev/null
+    -DAFM_TEST_SEARCH_MODELS=$models -DAFM_TEST_PACKAGE=$package -DAFM_TEST_OPTIMISED=$optimised > /dev/null
   cmake --build "build/$variant" -j"$jobs"
   echo "=== $variant tests ==="
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -31,7 +32,7 @@ done
 # The threaded tests once more under ThreadSanitizer (only their executable
 # is built; the parts run on std::threads there, see mesh_in_parallel_2.h)
 echo "=== tsan build (the threaded tests) ==="
-cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE_THREAD=ON -DAFM_BUILD_EXAMPLES=OFF \
+cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE_THREAD=ON -DAFM_BUILD_EXAMPLES=OFF -DAFM_TEST_OPTIMISED=OFF \
   -DAFM_TEST_SEARCH_MODELS=OFF -DAFM_TEST_PACKAGE=OFF > /dev/null
 cmake --build build/tsan -j"$jobs" --target test_parallel_meshing
 echo "=== tsan tests ==="

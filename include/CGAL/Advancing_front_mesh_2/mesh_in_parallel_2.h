@@ -14,8 +14,6 @@
 
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Strip_decomposition_2.h>
-#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
-#include <CGAL/Advancing_front_mesh_2/internal/Lawson_flips.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Part_splicing_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Quality_smoother.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Star_smoother.h>
@@ -23,7 +21,6 @@
 #include <CGAL/Delaunay_mesh_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Handle_hash_function.h>
-#include <CGAL/Has_timestamp.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -39,7 +36,6 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
