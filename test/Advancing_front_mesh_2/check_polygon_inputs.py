@@ -132,6 +132,16 @@ if os.path.exists(lake):
         nt_shp, nt_json = mesh_area(os.path.join(WORK, "lake_shp.off"))[1], mesh_area(os.path.join(WORK, "lake_geojson.off"))[1]
         check(abs(nt_shp - nt_json) <= 0.01 * nt_json, "lake: as many triangles from the Shapefile (%d, %d)" %
               (nt_shp, nt_json))
+        # GDAL is in a module loaded only for such inputs: afmesh_2 runs without it (a .poly file), and
+        # refuses an OGR source naming the module when it is not beside the executable
+        alone = os.path.join(WORK, "without_module")
+        os.makedirs(alone, exist_ok=True)
+        shutil.copy(AFMESH, alone)
+        lone = os.path.join(alone, os.path.basename(AFMESH))
+        run(lone, os.path.join(WORK, "lake_geojson.poly"), "--size", "0.1", "-o", os.path.join(alone, "lake.off"))
+        r = run(lone, os.path.join(WORK, "lake.gpkg"), "--size", "0.1", "-o", os.path.join(alone, "x.off"), code=1)
+        check("lake.gpkg" in r.stderr and "afmesh_2_ogr.so" in r.stderr and r.stderr.count("\n") == 1,
+              "without the GDAL module: %s" % r.stderr)
 else:
     print("lake.msh not found under", SHARED, "- the coastline part is skipped")
 
