@@ -72,7 +72,7 @@ json_field() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); prin
   echo "Whole processes, each reading its input and writing its mesh (ours .off, Triangle .node/.ele);"
   echo "time and peak resident memory from GNU time, the fastest of $runs runs. Quality from our --stats (radius ratio 2r/R) and, for"
   echo "Triangle, from the same formula on its .ele/.node. \`afmesh_2 --version\`: $("$B/afmesh_2" --version)"
-  echo "(with GDAL, the optional OGR input, the process maps about 27 MB more at start than without)."
+  echo "(GDAL, for the optional OGR inputs, is a module afmesh_2 loads only for such an input: it costs nothing here)."
   echo
   echo "| input | mesher | triangles | seconds | triangles/s | speed-up over 1 thread | peak MB | bytes/triangle | mean radius ratio | share > 0.9 | parts time (cut / parts / merge / seams) |"
   echo "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|---|"
