@@ -79,6 +79,7 @@ private:
   const Front& front_;
   const Visibility& visibility_;
   std::vector<Candidate> candidates_, dropped_; // scratch space reused across steps
+  std::vector<Vid> far_;                         // dropped unevaluated (see collect_candidates())
   std::vector<double> lowest_after_;
 };
 
@@ -116,15 +117,38 @@ void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Ne
   const double cutoff = e.exact ? max_centre_height / e.half_length : std::numeric_limits<double>::infinity();
   candidates_.clear();
   dropped_.clear();
+  far_.clear();
   // A candidate is dropped only if its height's lower bound is above the
   // cut-off; if a kept one may lie above it (its upper bound is), the
   // dropped ones it might not exclude are taken back, so the answer among
   // the kept candidates is the answer among all.
+  //
+  // The neighbourhood's disk also holds the new point's star (Point_placement.h),
+  // and a third of its vertices lie beyond every circle through a and b
+  // whose centre is below the cut-off (such a circle reaches at most
+  // h + sqrt(h^2 + L^2 / 4) from the edge's midpoint, h the cut-off's
+  // height > 0, L the edge's length; for a centre below the edge, the arc on
+  // the left lies in the disk of radius L / 2): their heights surely exceed
+  // the cut-off, by far more than their error bounds with the margins (a
+  // millionth of that reach, and a billionth of the coordinates' magnitude
+  // for the rounding of the distances), and they are set aside without their
+  // evaluation, which is needed only when they may be taken back.
+  const double h = max_centre_height;
+  const double far = (std::isfinite(cutoff) && h > 0)
+                       ? (h + std::sqrt(h * h + e.quarter_l2)) * (1 + 1e-6) + 1e-9 * (std::abs(e.mx) + std::abs(e.my))
+                       : std::numeric_limits<double>::infinity();
+  const double far2 = far * far;
   double straddle = -std::numeric_limits<double>::infinity();
   Candidate cand;
-  for(std::size_t z : n.vertices) {
-    const Vid c = Vid(z);
-    if(c == a || c == b || !evaluate(e, c, cand)) continue;
+  for(std::size_t i = 0; i < n.vertices.size(); ++i) {
+    const Vid c = Vid(n.vertices[i]);
+    if(c == a || c == b) continue;
+    const double dx = n.vertex_xy[i][0] - e.mx, dy = n.vertex_xy[i][1] - e.my;
+    if(dx * dx + dy * dy > far2) {
+      far_.push_back(c);
+      continue;
+    }
+    if(!evaluate(e, c, cand)) continue;
     if(cand.low > cutoff && std::isfinite(cand.low)) {
       dropped_.push_back(cand);
     } else {
@@ -133,9 +157,16 @@ void Delaunay_apex<Front, Visibility>::collect_candidates(Vid a, Vid b, const Ne
         straddle = (std::max)(straddle, std::isnan(cand.high) ? std::numeric_limits<double>::infinity() : cand.high);
     }
   }
-  if(straddle > cutoff)
+  if(straddle > cutoff) {
     for(const Candidate& d : dropped_)
       if(!(d.low > straddle)) candidates_.push_back(d);
+    for(Vid c : far_)
+      if(evaluate(e, c, cand) && !(cand.low > straddle)) candidates_.push_back(cand);
+  }
+#ifndef CGAL_NO_ASSERTIONS
+  // what was claimed of the vertices set aside
+  for(Vid c : far_) CGAL_assertion(!evaluate(e, c, cand) || cand.low > cutoff);
+#endif
   std::sort(candidates_.begin(), candidates_.end(),
             [](const Candidate& p, const Candidate& q) { return p.height < q.height; });
 }
