@@ -32,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -518,6 +519,28 @@ AFM_TEST_CASE(test_io_write_off)
   std::ostringstream again;
   afm_io::write_OFF(again, fine);
   AFM_CHECK(again.str() == fos.str());
+
+  // write_OFF() numbers the vertices in 32 bits below 2^32 vertices and in
+  // 64 above: the wide writer gives the same file.
+  std::ostringstream wide;
+  afm_io::internal::mesh_write_OFF_lean<std::uint64_t>(wide, fine);
+  AFM_CHECK(wide.str() == fos.str());
+
+  // It walks the faces twice instead of copying them into the writers'
+  // shared view: its file is the one the view gives (the numbering .node/.ele,
+  // .msh and .vtu use), byte for byte.
+  afm_io::internal::Mesh_domain_view<CDT> view;
+  afm_io::internal::mesh_collect_domain(fine, view);
+  std::ostringstream from_view;
+  {
+    afm_io::internal::Text_output out(from_view);
+    out.put("OFF\n").put_uint(view.points.size()).put(' ').put_uint(view.triangles.size()).put(" 0\n");
+    for(const auto& q : view.points) out.put_double(q[0]).put(' ').put_double(q[1]).put(" 0\n");
+    for(const auto& t : view.triangles)
+      out.put("3 ").put_uint(t[0]).put(' ').put_uint(t[1]).put(' ').put_uint(t[2]).put('\n');
+    out.flush();
+  }
+  AFM_CHECK(view.triangles.size() == nf && from_view.str() == fos.str());
 }
 
 AFM_TEST_CASE(test_io_write_node_ele)

@@ -84,32 +84,33 @@ void mesh_write_edge(std::ostream& os, const Mesh_domain_view<CDT>& m)
 
 
 // write_OFF() without a Mesh_domain_view: the triangles' vertex numbers in
-// 32 bits, and the points written from a second walk over the faces in the
-// same order (a vertex is written where its number first appears) instead
-// of copied. At a million triangles the view's copies (60 MB) were a third
-// of the run's peak memory; this keeps the numbering table and 12 bytes a
-// triangle. The file is the one the view gives, byte for byte.
-template <class CDT>
+// `Index` (32 bits below 2^32 vertices), and the points written from a
+// second walk over the faces in the same order (a vertex is written where
+// its number first appears) instead of copied. At a million triangles the
+// view's copies (60 MB) were a third of the run's peak memory; this keeps
+// the numbering table and 3 indices a triangle. The file is the one the
+// view gives, byte for byte (test_io_write_off checks both widths).
+template <class Index, class CDT>
 void mesh_write_OFF_lean(std::ostream& os, const CDT& cdt)
 {
-  CGAL::Advancing_front_mesh_2::internal::Flat_hash_map<const void*, std::uint32_t> index(nullptr);
+  CGAL::Advancing_front_mesh_2::internal::Flat_hash_map<const void*, Index> index(nullptr);
   index.reserve(cdt.number_of_vertices());
-  std::vector<std::array<std::uint32_t, 3> > triangles;
+  std::vector<std::array<Index, 3> > triangles;
   triangles.reserve(cdt.number_of_faces());
-  std::uint32_t next = 0;
+  Index next = 0;
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if(!f->is_in_domain()) continue;
-    std::array<std::uint32_t, 3> t;
+    std::array<Index, 3> t;
     for(int i = 0; i < 3; ++i) {
       const void* v = &*f->vertex(i);
-      const std::uint32_t* k = index.find(v);
+      const Index* k = index.find(v);
       t[i] = k != nullptr ? *k : index.insert(v, next++);
     }
     triangles.push_back(t);
   }
   Text_output out(os);
   out.put("OFF\n").put_uint(next).put(' ').put_uint(triangles.size()).put(" 0\n");
-  std::uint32_t written = 0;
+  Index written = 0;
   std::size_t t = 0;
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && written < next; ++f) {
     if(!f->is_in_domain()) continue;
@@ -121,7 +122,7 @@ void mesh_write_OFF_lean(std::ostream& os, const CDT& cdt)
       }
     ++t;
   }
-  for(const std::array<std::uint32_t, 3>& tr : triangles)
+  for(const std::array<Index, 3>& tr : triangles)
     out.put("3 ").put_uint(tr[0]).put(' ').put_uint(tr[1]).put(' ').put_uint(tr[2]).put('\n');
   out.flush();
 }
@@ -151,18 +152,10 @@ and formatting; the stream's state is left as it was.
 template <class CDT>
 void write_OFF(std::ostream& os, const CDT& cdt)
 {
-  if(cdt.number_of_vertices() < (std::numeric_limits<std::uint32_t>::max)()) {
-    internal::mesh_write_OFF_lean(os, cdt);
-    return;
-  }
-  internal::Mesh_domain_view<CDT> m;
-  internal::mesh_collect_domain(cdt, m);
-  internal::Text_output out(os);
-  out.put("OFF\n").put_uint(m.points.size()).put(' ').put_uint(m.triangles.size()).put(" 0\n");
-  for(const std::array<double, 2>& p : m.points) out.put_double(p[0]).put(' ').put_double(p[1]).put(" 0\n");
-  for(const std::array<std::size_t, 3>& t : m.triangles)
-    out.put("3 ").put_uint(t[0]).put(' ').put_uint(t[1]).put(' ').put_uint(t[2]).put('\n');
-  out.flush();
+  if(cdt.number_of_vertices() < (std::numeric_limits<std::uint32_t>::max)())
+    internal::mesh_write_OFF_lean<std::uint32_t>(os, cdt);
+  else
+    internal::mesh_write_OFF_lean<std::uint64_t>(os, cdt);
 }
 
 /*!
