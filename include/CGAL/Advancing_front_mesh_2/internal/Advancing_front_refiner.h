@@ -367,7 +367,9 @@ bool Advancing_front_refiner<Tr, S, V, P, C>::step()
     front_.loops_changed = false;
     {
       Phase_scope phase(ctx_.timer, PLACEMENT);
+      front_.defer_queueing = true;
       process_edge(Front::source(e.key), Front::target(e.key));
+      front_.queue_created_edges();
     }
     if(front_.loops_changed && pocket_priority_) pockets_.mark();
     front_.level = 0;

@@ -72,6 +72,7 @@ public:
     Face_handle behind;  // face on the meshed side (mesh or outside face), null on a virgin side of a constraint
     int behind_index = -1;
     bool constrained = false;
+    bool awaiting_queue = false; // created in this step, queued at its end (queue_created_edges())
     std::uint16_t level = 0; // pockets within pockets: see Pockets.h
     std::uint32_t version = 0;
   };
@@ -145,6 +146,7 @@ public:
   void remove_edge(Vid u, Vid v);
   void push(Edge_key k, const Front_edge& fe) { queue.push(Queue_entry{edge_length(source(k), target(k)), k, fe.version, fe.level}); }
   void compact_queue();
+  void queue_created_edges();
 
   // ---------------------------------------------------- front triangles
   void count_edge_behind(Face_handle f, Vid a = no_vertex, Vid b = no_vertex, Vid c = no_vertex);
@@ -202,6 +204,14 @@ public:
   // keyed by (source, target); the empty key is no real edge
   Flat_hash_map<Edge_key, Front_edge> edges{~Edge_key(0)};
   std::priority_queue<Queue_entry> queue;
+  // Set during a step of the mesher: the edges it creates are queued at its
+  // end, by queue_created_edges(), instead of when they are made. About a
+  // third of them are closed again within the step (the fan about a new
+  // point closes the edges its first triangle opened), and each entry of a
+  // closed edge cost the heap a pop later. The order of the pops is that of
+  // the entries' keys, which are distinct (the versions are), so it does not
+  // depend on when they were pushed: the mesh is the same.
+  bool defer_queueing = false;
   std::uint32_t version_counter = 0;
   std::size_t queue_compactions = 0;
 
@@ -231,6 +241,7 @@ void Front_2<C, P, F>::clear()
   released_ids.clear();
   face_records.clear();
   queue = std::priority_queue<Queue_entry>();
+  defer_queueing = false;
   level = 0;
   loops_changed = false;
   created_this_step.clear();
@@ -308,6 +319,7 @@ void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_ind
   fe.constrained = constrained;
   fe.level = level;
   fe.version = ++version_counter;
+  fe.awaiting_queue = defer_queueing;
   const double len = edge_length(u, v);
   edges.insert(key(u, v), fe);
   created_since_gather.push_back(key(u, v));
@@ -328,9 +340,27 @@ void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_ind
   if((!into_hub || hubs.contains(u)) && !(len <= active_points.reach(u))) active_points.set_reach(u, len);
   if(out[u].size() == hubs.min_out_degree) update_hub(u);
   if(behind != Face_handle() && behind->is_in_domain()) count_edge_behind(behind, v, apex, u);
-  queue.push(Queue_entry{len, key(u, v), fe.version, fe.level});
-  if(queue.size() > 2 * edges.size() + 1024) compact_queue();
+  if(!defer_queueing) {
+    queue.push(Queue_entry{len, key(u, v), fe.version, fe.level});
+    if(queue.size() > 2 * edges.size() + 1024) compact_queue();
+  }
   ctx_.stats.largest_front = (std::max)(ctx_.stats.largest_front, edges.size());
+}
+
+// The end of a step: the edges it created that are still on the front enter
+// the queue (an edge created twice in the step is listed twice and queued
+// once), and queueing is immediate again.
+template <class C, class P, class F>
+void Front_2<C, P, F>::queue_created_edges()
+{
+  defer_queueing = false;
+  for(Edge_key k : created_this_step) {
+    Front_edge* fe = edges.find(k);
+    if(fe == nullptr || !fe->awaiting_queue) continue;
+    fe->awaiting_queue = false;
+    push(k, *fe);
+  }
+  if(queue.size() > 2 * edges.size() + 1024) compact_queue();
 }
 
 // The queue keeps an entry of every front edge until it is popped, also of
@@ -340,6 +370,8 @@ void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_ind
 template <class C, class P, class F>
 void Front_2<C, P, F>::compact_queue()
 {
+  // (within a step it would queue the edges awaiting the step's end twice)
+  CGAL_precondition(!defer_queueing);
   std::vector<Queue_entry> live;
   live.reserve(edges.size());
   edges.for_each([this, &live](Edge_key k, const Front_edge& fe) {
