@@ -24,8 +24,12 @@ bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gms
   python3-pytest libgdal-dev gdal-bin
 end_stage "installing what is missing"
 jobs=${AFM_JOBS:-2}
+# Line tables only (-g1) instead of full debug information: the sanitizers'
+# reports keep their files and lines, and the compiler does a third less work
+# (test_validity_checker.cpp under ASan: 92 s -> 57 s; objects half the size)
+debug_info=-DCMAKE_CXX_FLAGS_DEBUG=-g1
 echo "=== Debug build (CGAL assertions, ASan + UBSan) ==="
-cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE=ON -DAFM_TEST_SEARCH_MODELS=ON \
+cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Debug "$debug_info" -DAFM_SANITIZE=ON -DAFM_TEST_SEARCH_MODELS=ON \
   -DAFM_TEST_PACKAGE=ON -DAFM_TEST_OPTIMISED=ON > /dev/null
 cmake --build build/asan -j"$jobs"
 end_stage "Debug + ASan build"
@@ -37,7 +41,7 @@ end_stage "Debug + ASan tests"
 # The threaded tests once more under ThreadSanitizer (only their executable
 # is built; the parts run on std::threads there, see mesh_in_parallel_2.h)
 echo "=== tsan build (the threaded tests) ==="
-cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=Debug -DAFM_SANITIZE_THREAD=ON -DAFM_BUILD_EXAMPLES=OFF -DAFM_TEST_OPTIMISED=OFF \
+cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=Debug "$debug_info" -DAFM_SANITIZE_THREAD=ON -DAFM_BUILD_EXAMPLES=OFF -DAFM_TEST_OPTIMISED=OFF \
   -DAFM_TEST_SEARCH_MODELS=OFF -DAFM_TEST_PACKAGE=OFF > /dev/null
 cmake --build build/tsan -j"$jobs" --target test_parallel_meshing
 echo "=== tsan tests ==="
