@@ -146,6 +146,8 @@ public:
   void remove_edge(Vid u, Vid v);
   void push(Edge_key k, const Front_edge& fe) { queue.push(Queue_entry{edge_length(source(k), target(k)), k, fe.version, fe.level}); }
   void compact_queue();
+  // the queue rebuilt once most of its entries are stale (compact_queue())
+  void compact_queue_if_mostly_stale() { if(queue.size() > 2 * edges.size() + 1024) compact_queue(); }
   void queue_created_edges();
 
   // ---------------------------------------------------- front triangles
@@ -342,7 +344,7 @@ void Front_2<C, P, F>::add_edge(Vid u, Vid v, Face_handle behind, int behind_ind
   if(behind != Face_handle() && behind->is_in_domain()) count_edge_behind(behind, v, apex, u);
   if(!defer_queueing) {
     queue.push(Queue_entry{len, key(u, v), fe.version, fe.level});
-    if(queue.size() > 2 * edges.size() + 1024) compact_queue();
+    compact_queue_if_mostly_stale();
   }
   ctx_.stats.largest_front = (std::max)(ctx_.stats.largest_front, edges.size());
 }
@@ -360,7 +362,7 @@ void Front_2<C, P, F>::queue_created_edges()
     fe->awaiting_queue = false;
     push(k, *fe);
   }
-  if(queue.size() > 2 * edges.size() + 1024) compact_queue();
+  compact_queue_if_mostly_stale();
 }
 
 // The queue keeps an entry of every front edge until it is popped, also of
