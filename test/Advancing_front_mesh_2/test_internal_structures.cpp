@@ -1532,6 +1532,58 @@ AFM_TEST_CASE(test_internal_finished_faces_check)
   }
 }
 
+// A triangle for the tests of circle_of()'s error bound: at a scale from
+// 2^-600 to 2^600, every third one 10^6 of its sizes from the origin, its
+// third point c near the line ab when flat (flatness down to
+// 10^-max_decades).
+struct Circle_test_triangle
+{
+  double ax, ay, bx, by, cx, cy, scale, flatness;
+};
+
+Circle_test_triangle random_circle_test_triangle(std::mt19937_64& rng, int i, double max_decades)
+{
+  std::uniform_real_distribution<double> unit(-1, 1);
+  Circle_test_triangle t;
+  t.scale = std::ldexp(1., int(unit(rng) * 600));
+  const double offset = i % 3 == 0 ? 1e6 * t.scale : 0;
+  t.flatness = std::pow(10., -max_decades * (0.5 + 0.5 * unit(rng)));
+  t.ax = offset + t.scale * unit(rng), t.ay = offset + t.scale * unit(rng);
+  t.bx = offset + t.scale * unit(rng), t.by = offset + t.scale * unit(rng);
+  const double along = unit(rng);
+  t.cx = t.ax + along * (t.bx - t.ax) - t.flatness * (t.by - t.ay);
+  t.cy = t.ay + along * (t.by - t.ay) + t.flatness * (t.bx - t.ax);
+  return t;
+}
+
+// twice the signed area of the triangle ABC, exactly
+CGAL::Exact_rational circle_test_determinant(const CGAL::Exact_rational (&A)[2], const CGAL::Exact_rational (&B)[2],
+                                             const CGAL::Exact_rational (&C)[2])
+{
+  return 2 * (A[0] * (B[1] - C[1]) + B[0] * (C[1] - A[1]) + C[0] * (A[1] - B[1]));
+}
+
+// The computed circle c lies within `error` of the true circumcircle of
+// the points A, B, C (rationals): its centre on each axis, its radius.
+// False for a degenerate triangle.
+bool circle_within_bound(const CGAL::Exact_rational (&A)[2], const CGAL::Exact_rational (&B)[2],
+                         const CGAL::Exact_rational (&C)[2], const CGAL::Advancing_front_mesh_2::internal::Circle& c,
+                         double error)
+{
+  typedef CGAL::Exact_rational Q;
+  const Q d = circle_test_determinant(A, B, C);
+  if(d == 0) return false;
+  const Q a2 = A[0] * A[0] + A[1] * A[1], b2 = B[0] * B[0] + B[1] * B[1], c2 = C[0] * C[0] + C[1] * C[1];
+  const Q ux = (a2 * (B[1] - C[1]) + b2 * (C[1] - A[1]) + c2 * (A[1] - B[1])) / d;
+  const Q uy = (a2 * (C[0] - B[0]) + b2 * (A[0] - C[0]) + c2 * (B[0] - A[0])) / d;
+  // |centre - true centre| <= error, without square roots: each axis
+  if(!(CGAL::abs(ux - Q(c.cx)) <= Q(error) && CGAL::abs(uy - Q(c.cy)) <= Q(error))) return false;
+  // |r - true r| <= error: (r - e)^2 <= r*^2 <= (r + e)^2
+  const Q r2 = (ux - A[0]) * (ux - A[0]) + (uy - A[1]) * (uy - A[1]);
+  const Q lo = c.r > error ? (Q(c.r) - Q(error)) * (Q(c.r) - Q(error)) : Q(0);
+  return lo <= r2 && r2 <= (Q(c.r) + Q(error)) * (Q(c.r) + Q(error));
+}
+
 // circle_of()'s error bound: the circle computed in doubles lies within the
 // bound of the true circumcircle (computed in rationals), for well-shaped,
 // thin and nearly flat triangles at scales from 1e-200 to 1e200 and far from
@@ -1541,42 +1593,80 @@ AFM_TEST_CASE(test_internal_circle_error_bound)
 {
   typedef CGAL::Exact_rational Q;
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> unit(-1, 1);
   std::size_t checked = 0, unbounded = 0;
   double worst_share = 0;
   for(int i = 0; i < 20000; ++i) {
-    const double scale = std::ldexp(1., int(unit(rng) * 600)), offset = i % 3 == 0 ? 1e6 * scale : 0;
-    const double flatness = std::pow(10., -18 * (0.5 + 0.5 * unit(rng)));
-    const double ax = offset + scale * unit(rng), ay = offset + scale * unit(rng);
-    const double bx = offset + scale * unit(rng), by = offset + scale * unit(rng);
-    // c near the line ab when flat
-    const double t = unit(rng);
-    const double cx = ax + t * (bx - ax) - flatness * (by - ay);
-    const double cy = ay + t * (by - ay) + flatness * (bx - ax);
+    const Circle_test_triangle t = random_circle_test_triangle(rng, i, 18);
     double error = 0;
     const CGAL::Advancing_front_mesh_2::internal::Circle c =
-      CGAL::Advancing_front_mesh_2::internal::circle_of(ax, ay, bx, by, cx, cy, &error);
-    const Q d = 2 * (Q(ax) * (Q(by) - Q(cy)) + Q(bx) * (Q(cy) - Q(ay)) + Q(cx) * (Q(ay) - Q(by)));
-    if(d == 0) continue;
+      CGAL::Advancing_front_mesh_2::internal::circle_of(t.ax, t.ay, t.bx, t.by, t.cx, t.cy, &error);
+    const Q A[2] = {Q(t.ax), Q(t.ay)}, B[2] = {Q(t.bx), Q(t.by)}, C[2] = {Q(t.cx), Q(t.cy)};
+    if(circle_test_determinant(A, B, C) == 0) continue;
     if(!std::isfinite(error)) {
       ++unbounded;
       continue;
     }
-    const Q a2 = Q(ax) * Q(ax) + Q(ay) * Q(ay), b2 = Q(bx) * Q(bx) + Q(by) * Q(by), c2 = Q(cx) * Q(cx) + Q(cy) * Q(cy);
-    const Q ux = (a2 * (Q(by) - Q(cy)) + b2 * (Q(cy) - Q(ay)) + c2 * (Q(ay) - Q(by))) / d;
-    const Q uy = (a2 * (Q(cx) - Q(bx)) + b2 * (Q(ax) - Q(cx)) + c2 * (Q(bx) - Q(ax))) / d;
-    const Q dx = ux - Q(c.cx), dy = uy - Q(c.cy);
-    // |centre - true centre| <= error, without square roots: each axis
-    AFM_CHECK_MSG(CGAL::abs(dx) <= Q(error) && CGAL::abs(dy) <= Q(error), "centre off by more than " << error);
-    // |r - true r| <= error: (r - e)^2 <= r*^2 <= (r + e)^2
-    const Q r2 = (ux - Q(ax)) * (ux - Q(ax)) + (uy - Q(ay)) * (uy - Q(ay));
-    const Q lo = c.r > error ? (Q(c.r) - Q(error)) * (Q(c.r) - Q(error)) : Q(0);
-    AFM_CHECK_MSG(lo <= r2 && r2 <= (Q(c.r) + Q(error)) * (Q(c.r) + Q(error)), "radius off by more than " << error);
+    AFM_CHECK_MSG(circle_within_bound(A, B, C, c, error), "circle off by more than " << error);
     ++checked;
-    if(flatness > 1e-3) worst_share = (std::max)(worst_share, error / c.r);
+    if(t.flatness > 1e-3) worst_share = (std::max)(worst_share, error / c.r);
   }
   std::cout << "  " << checked << " circles within their bound, " << unbounded
             << " too flat to bound; largest bound over radius for reasonable triangles " << worst_share << "\n";
   AFM_CHECK(checked > 15000 && unbounded > 0);
   AFM_CHECK(worst_share < 1e-7); // 1.0e-8 measured (a thin triangle 1e6 of its sizes from the origin)
+}
+
+// circle_of()'s error bound for coordinates that are themselves off by up
+// to coordinate_error (to_double() of a number that is not a double): the
+// circle computed from the doubles lies within the bound of the true
+// circumcircle of points moved by up to that much on each axis (computed in
+// rationals), for errors from 1e-16 to 1e-4 of the triangle's size; and for
+// an error of a few units in the last place of the coordinates the bound
+// stays small against the radius, as the mesher needs (it builds no
+// triangle about a new point unless the triangle's circle, grown by its
+// bound, lies inside the star's disk).
+AFM_TEST_CASE(test_internal_circle_error_bound_inexact_coordinates)
+{
+  typedef CGAL::Exact_rational Q;
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::size_t checked = 0, unbounded = 0;
+  double worst_share = 0, worst_share_fat = 0;
+  for(int i = 0; i < 20000; ++i) {
+    const Circle_test_triangle t = random_circle_test_triangle(rng, i, 12);
+    const double magnitude =
+      (std::max)({std::abs(t.ax), std::abs(t.ay), std::abs(t.bx), std::abs(t.by), std::abs(t.cx), std::abs(t.cy)});
+    // an error of 4 units in the last place of the magnitude, or up to
+    // 1e-4 of the triangle's size
+    const bool ulps = i % 2 == 0;
+    const double coordinate_error =
+      ulps ? 4 * std::ldexp(magnitude, -52) : t.scale * std::pow(10., -16 + 6 * (1 + unit(rng)));
+    double error = 0;
+    const CGAL::Advancing_front_mesh_2::internal::Circle c = CGAL::Advancing_front_mesh_2::internal::circle_of(
+      t.ax, t.ay, t.bx, t.by, t.cx, t.cy, &error, coordinate_error);
+    if(!std::isfinite(error)) {
+      ++unbounded;
+      continue;
+    }
+    // the true points: each coordinate moved by up to the error, the
+    // extremes more often than not
+    auto moved = [&](double v) {
+      const double f = unit(rng);
+      return Q(v) + Q(coordinate_error) * Q(std::abs(f) > 0.5 ? (f > 0 ? 1. : -1.) : f);
+    };
+    const Q A[2] = {moved(t.ax), moved(t.ay)}, B[2] = {moved(t.bx), moved(t.by)}, C[2] = {moved(t.cx), moved(t.cy)};
+    AFM_CHECK_MSG(circle_within_bound(A, B, C, c, error),
+                  "circle off by more than " << error << " (coordinate error " << coordinate_error << ")");
+    ++checked;
+    if(ulps && t.flatness > 1e-3) worst_share = (std::max)(worst_share, error / c.r);
+    if(ulps && t.flatness > 0.1) worst_share_fat = (std::max)(worst_share_fat, error / c.r);
+  }
+  std::cout << "  " << checked << " circles within their bound, " << unbounded
+            << " too flat to bound; with coordinates off by 4 ulps, the largest bound over the radius "
+            << worst_share << " (flatness above 1e-3), " << worst_share_fat << " (above 0.1)\n";
+  AFM_CHECK(checked > 15000 && unbounded > 0);
+  // measured: 5.1e-4 and 8.5e-6, both for triangles 1e6 of their sizes from
+  // the origin, where to_double()'s promised relative 1e-5 would be 10 sizes
+  AFM_CHECK(worst_share < 1e-3);
+  AFM_CHECK(worst_share_fat < 1e-4);
 }

@@ -3,10 +3,17 @@
 // predicates, new points are rounded to doubles (notes, step 6).
 #include "afm_test_mesh.h"
 #include "afm_geometries.h"
+#include "afm_random_pslg.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
+
+#include <cstdint>
+#include <initializer_list>
+#include <list>
+#include <string>
+#include <vector>
 
 namespace {
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
@@ -44,4 +51,71 @@ AFM_TEST_CASE(test_kernel_epeck_thin_plates)
   typedef afm_test::Types<Epeck>::CDT CDT;
   const auto in = afm_geometry::two_thin_plates();
   afm_test::mesh_and_check<CDT>(in, afm_test::Boundary_graded_size<Epeck>(in, 0.3), "Epeck: two thin plates");
+}
+
+namespace {
+// Coordinates that are not doubles: random domains with every x divided
+// exactly by 3 and every y by 7, meshed at a size small against the
+// coordinates' magnitude (a fifth of the parallel test's). The circles'
+// error bounds once assumed to_double's promised relative precision (1e-5
+// of the magnitude, larger than these triangles), so no triangle was built
+// about a new point and later points spiralled into it without end (Epeck:
+// domains 1, 5 and 7 of the first eight; Exact_rational: 5 and 7, the two
+// tried); the step limit turns that into a failure. The checker reads the mesh
+// in doubles: the input points rounded, the segments' split points within
+// its tolerance.
+template <class K>
+void mesh_coordinates_not_doubles(const std::string& name, std::initializer_list<std::uint64_t> seeds_to_run)
+{
+  typedef typename afm_test::Types<K>::CDT CDT;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point;
+  const FT sx(3), sy(7);
+  for(const std::uint64_t seed : seeds_to_run) {
+    afm_random::Generator g(seed);
+    const afm_random::Domain d = g.domain();
+    const double h = g.uniform(0.01, 0.03) * d.scale / 5;
+    const std::string label = name + ": seed " + std::to_string(seed) + ", coordinates divided by 3 and 7";
+    CDT cdt;
+    afm_test::Poly_data rounded = d.pslg; // what the checker reads
+    std::vector<typename CDT::Vertex_handle> vh;
+    for(std::size_t i = 0; i < d.pslg.points.size(); ++i) {
+      const Point p(FT(d.pslg.points[i][0]) / sx, FT(d.pslg.points[i][1]) / sy);
+      vh.push_back(cdt.insert(p));
+      rounded.points[i] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y())}};
+    }
+    for(const auto& s : d.pslg.segments) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
+    std::list<Point> seeds;
+    for(std::size_t i = 0; i < d.pslg.holes.size(); ++i) {
+      seeds.push_back(Point(FT(d.pslg.holes[i][0]) / sx, FT(d.pslg.holes[i][1]) / sy));
+      rounded.holes[i] = {{CGAL::to_double(seeds.back().x()), CGAL::to_double(seeds.back().y())}};
+    }
+    afm_test::Mesher<CDT> mesher(cdt, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K>(h));
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.init();
+    // with Epeck the meshes take 17,959, 19,489 and 3,444 steps; before
+    // the fix, domain 1 had made 7,059 points in 20,000 steps, most of them
+    // in the spiral
+    const std::size_t step_limit = 50000;
+    std::size_t steps = 0;
+    while(steps < step_limit && mesher.step_by_step_refine_mesh()) ++steps;
+    AFM_CHECK_MSG(steps < step_limit, label << ": no end after " << steps << " steps, "
+                                            << mesher.statistics().points_inserted << " points inserted");
+    AFM_CHECK_MSG(cdt.is_valid(), label << ": CGAL's is_valid() failed");
+    const auto report = afm_test::check_split_mesh(rounded, afm_test::extract_mesh(cdt));
+    std::cout << "  " << label << ": " << report.summary() << "\n";
+    AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
+  }
+}
+} // namespace
+
+AFM_TEST_CASE(test_kernel_epeck_coordinates_not_doubles)
+{
+  mesh_coordinates_not_doubles<Epeck>("Epeck", {1, 5, 7});
+}
+
+// (the rational kernel is slower: one domain)
+AFM_TEST_CASE(test_kernel_exact_rational_coordinates_not_doubles)
+{
+  mesh_coordinates_not_doubles<Rational_kernel>("Simple_cartesian<Exact_rational>", {7});
 }

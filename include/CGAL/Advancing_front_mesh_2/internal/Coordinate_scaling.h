@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <type_traits>
 
 namespace CGAL {
@@ -69,6 +71,12 @@ public:
   bool exact() const { return std::is_same<FT, double>::value || exact_; }
   void set_exact(bool e) { exact_ = e; }
 
+  // How far an internal coordinate may lie from the true one, in internal
+  // units: 0 when exact(), else measured on the vertices when the scaling
+  // was made (for_triangulation(); the mesher's own points are doubles),
+  // and not a number when unknown.
+  double coordinate_error() const { return exact() ? 0 : coordinate_error_; }
+
   // a length (a size, a radius): scaled, not moved
   double to_internal_length(const FT& v) const { return scaled(CGAL::to_double(v)); }
   double ix(const Point& p) const { return scaled(CGAL::to_double(p.x()) - origin_x_); }
@@ -101,6 +109,7 @@ public:
       s.origin_y_ = origin_for(lo[1], hi[1]);
     }
     s.exponent_ = s.exponent_for(tr);
+    if(!s.exact_) s.coordinate_error_ = s.scaled(2 * largest_to_double_error(tr));
     return s;
   }
 
@@ -114,6 +123,29 @@ private:
          FT(CGAL::to_double(v->point().y())) != v->point().y())
         return false;
     return true;
+  }
+
+  // The largest distance between a vertex coordinate and its to_double():
+  // both lie in the coordinate's to_interval(), which is read after
+  // to_double() (that may refine a lazy number's interval). CGAL promises
+  // to_double() only to a relative 1e-5, but a number made by a few exact
+  // operations on doubles (a point divided by 3) is known to a few units in
+  // the last place, and the circles' error bounds must not be wider than
+  // the mesh's triangles.
+  template <class Tr>
+  static double largest_to_double_error(const Tr& tr)
+  {
+    double largest = 0;
+    auto measure = [&largest](const FT& c) {
+      CGAL::to_double(c);
+      const std::pair<double, double> i = CGAL::to_interval(c);
+      largest = (std::max)(largest, i.second - i.first);
+    };
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+      measure(v->point().x());
+      measure(v->point().y());
+    }
+    return largest;
   }
 
   double scaled(double d) const { return exponent_ == 0 ? d : std::ldexp(d, -exponent_); }
@@ -154,6 +186,7 @@ private:
   int exponent_ = 0;
   double origin_x_ = 0, origin_y_ = 0;
   bool exact_ = false;
+  double coordinate_error_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 } // namespace internal

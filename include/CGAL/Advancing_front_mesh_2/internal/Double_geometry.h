@@ -41,9 +41,12 @@ struct Circle
 // The circumcircle of the triangle (a, b, c); an infinite radius when the
 // points coincide or a coordinate is not finite. With `error`, also a bound
 // on how far the computed centre and radius may each lie from the true
-// circumcircle's, when the coordinates are exact (infinite when the
-// triangle is too flat for the double computation to bound anything).
-inline Circle circle_of(double ax, double ay, double bx, double by, double cx, double cy, double* error = nullptr)
+// circumcircle's (infinite when the triangle is too flat for the double
+// computation to bound anything): of the points whose coordinates these are
+// exactly, or, with `coordinate_error` > 0, of points each of whose
+// coordinates may lie that far from these.
+inline Circle circle_of(double ax, double ay, double bx, double by, double cx, double cy, double* error = nullptr,
+                        double coordinate_error = 0)
 {
   // circumcircle relative to a, which keeps the rounding error small for
   // coordinates far from the origin
@@ -69,16 +72,31 @@ inline Circle circle_of(double ax, double ay, double bx, double by, double cx, d
     // most 2 (11u Q + 12u P |ux|) / |d| + u |ux| per axis; scaling back and
     // adding a round each coordinate once more, the square root and the
     // product the radius three times. Doubled for the second-order terms.
+    //
+    // The coordinates' own error moves the frame's coordinates by at most
+    // e = 2 coordinate_error / scale each (a difference of two points),
+    // where all of them lie within 1 and b2, c2 within 2: d by at most
+    // 2 (4e + 2e^2) <= 9e and each numerator by at most
+    // 2 (2e + 4e + 2e^2 + e (4e + 2e^2)) <= 13e (for e <= 1e-3). While
+    // |d| >= 2 (12u P + 9e), the offset is off by at most
+    // 2 (13e + 9e |ux|) / |d| per axis more; the centre by that, scaled
+    // back, and a's own error (2 coordinate_error covers its sqrt(2)), the
+    // radius by the offset's part alone.
     const double u = std::ldexp(1., -53);
+    const double e = 2 * coordinate_error / scale;
     const double P = std::abs(bax * cay) + std::abs(bay * cax);
     const double Qx = std::abs(cay) * b2 + std::abs(bay) * c2, Qy = std::abs(bax) * c2 + std::abs(cax) * b2;
-    if(!(std::abs(d) >= 24 * u * P) || !std::isfinite(c.r)) {
+    if(!(std::abs(d) >= 24 * u * P + 18 * e) || !(e <= 1e-3) || !std::isfinite(c.r)) {
       *error = std::numeric_limits<double>::infinity();
     } else {
       const double ex = 2 * (11 * u * Qx + 12 * u * P * std::abs(ux)) / std::abs(d) + u * std::abs(ux);
       const double ey = 2 * (11 * u * Qy + 12 * u * P * std::abs(uy)) / std::abs(d) + u * std::abs(uy);
+      const double moved = coordinate_error > 0
+                             ? 2 * (26 * e + 9 * e * (std::abs(ux) + std::abs(uy))) / std::abs(d) * scale +
+                                 2 * coordinate_error
+                             : 0;
       *error = 2 * ((ex + ey + u * (std::abs(ux) + std::abs(uy))) * scale + u * (std::abs(c.cx) + std::abs(c.cy)) +
-                    3 * u * c.r);
+                    3 * u * c.r + moved);
     }
   }
   return c;

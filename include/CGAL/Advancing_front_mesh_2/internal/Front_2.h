@@ -135,9 +135,7 @@ public:
   Circle circle_of(Vid a, Vid b, Vid c, double& error) const
   {
     error = 0;
-    const Circle circle = internal::circle_of(x(a), y(a), x(b), y(b), x(c), y(c), &error);
-    error = ctx_.circle_error(circle, error);
-    return circle;
+    return ctx_.circle_through(x(a), y(a), x(b), y(b), x(c), y(c), &error);
   }
   bool is_front_segment(Vid u, Vid v) const;
   bool is_hub(Vid v) const { return hubs.contains(v); }

@@ -67,25 +67,27 @@ struct Refinement_context
 
   // the circumcircle of a face in internal coordinates, read through the
   // face (its vertices need not be active); with `error`, a bound on how far
-  // its centre and radius may lie from the true ones (circle_error())
+  // its centre and radius may lie from the true ones (circle_through())
   Circle circle_of(Face_handle f, double* error = nullptr) const
   {
     auto X = [this, &f](int i) { return ix(f->vertex(i)->point()); };
     auto Y = [this, &f](int i) { return iy(f->vertex(i)->point()); };
-    const Circle c = internal::circle_of(X(0), Y(0), X(1), Y(1), X(2), Y(2), error);
-    if(error) *error = circle_error(c, *error);
-    return c;
+    return circle_through(X(0), Y(0), X(1), Y(1), X(2), Y(2), error);
   }
 
-  // How far a circle computed from internal coordinates (centre and radius
-  // each) may lie from the true circle of the points, `rounding` being
-  // circle_of()'s bound for exact coordinates: with approximate ones
-  // (to_double of a number that is not a double, which CGAL promises to a
-  // relative 1e-5), that much of the coordinates' magnitude more, as the
-  // searches' paddings assume.
-  double circle_error(const Circle& c, double rounding) const
+  // The circle through three points given by their internal coordinates,
+  // with `error` as circle_of()'s: the double computation's rounding and,
+  // unless the coordinates are exact, their own error as measured on the
+  // vertices (Coordinate_scaling::coordinate_error()). Where that is
+  // unknown, CGAL's promise for to_double() (a relative 1e-5) stands in:
+  // that much of the coordinates' magnitude more.
+  Circle circle_through(double ax, double ay, double bx, double by, double cx, double cy, double* error) const
   {
-    return exact_coordinates() ? rounding : rounding + 1e-5 * (std::abs(c.cx) + std::abs(c.cy) + c.r);
+    const double coordinate_error = scaling.coordinate_error();
+    const bool known = !std::isnan(coordinate_error);
+    const Circle c = internal::circle_of(ax, ay, bx, by, cx, cy, error, known ? coordinate_error : 0.);
+    if(error && !known) *error += 1e-5 * (std::abs(c.cx) + std::abs(c.cy) + c.r);
+    return c;
   }
 
   double triangle_area(Face_handle f) const
