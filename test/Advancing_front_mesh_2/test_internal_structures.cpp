@@ -1649,8 +1649,10 @@ AFM_TEST_CASE(test_internal_circle_error_bound_inexact_coordinates)
       continue;
     }
     // the true points: each coordinate moved by up to the error, the
-    // extremes more often than not
-    auto moved = [&](double v) {
+    // extremes more often than not (the lambda returns a Q, not the gmpxx
+    // expression of temporaries that `auto` would deduce: those die with
+    // the return statement)
+    auto moved = [&](double v) -> Q {
       const double f = unit(rng);
       return Q(v) + Q(coordinate_error) * Q(std::abs(f) > 0.5 ? (f > 0 ? 1. : -1.) : f);
     };
