@@ -12,6 +12,17 @@
 # from the 2-thread run's --stats). Writes
 # doc/Advancing_front_mesh_2/benchmark/parallel_quality_results.md. About
 # 3 minutes on 2 cores once built (2 min 47 s on 2026-11-28).
+#
+# The means come with their standard error (the differences' spread over
+# the sizes, over the square root of their number): single sizes differ by
+# up to 2.4 points in the band, so five sizes estimate the mean to about
+# half a point. For more, AFM_QUALITY_STEPS lists the k (default
+# "-2 -1 0 1 2"), AFM_QUALITY_INPUTS names the inputs (any of "square
+# airfoil lake"; default all) and AFM_QUALITY_OUT the output file; e.g.
+#   AFM_QUALITY_STEPS="$(seq -s ' ' -10 9)" AFM_QUALITY_INPUTS=airfoil \
+#   AFM_QUALITY_OUT=doc/Advancing_front_mesh_2/benchmark/parallel_quality_airfoil_20_sizes.md \
+#   bash scripts/benchmark_parallel_quality.sh
+# (about 10 minutes on an idle machine).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh python3
@@ -19,13 +30,26 @@ source scripts/benchmark_common.sh
 bench_build_tool
 work=${AFM_BENCH_DIR:-/tmp/afm_parallel_quality}
 mkdir -p "$work"
-out=doc/Advancing_front_mesh_2/benchmark/parallel_quality_results.md
+out=${AFM_QUALITY_OUT:-doc/Advancing_front_mesh_2/benchmark/parallel_quality_results.md}
+steps=${AFM_QUALITY_STEPS:--2 -1 0 1 2}
+inputs=" ${AFM_QUALITY_INPUTS:-square airfoil lake} "
+read -r -a step_list <<< "$steps"
 
 # cases: "name|.poly file|size h"
-"$B/afm_make_input" square-with-hole "$work/square.poly" 0.001367 > /dev/null
-"$B/afm_make_input" multi-element-airfoil "$work/airfoil.poly" > /dev/null
-cases=("square with hole|$work/square.poly|0.001367" "four-element airfoil|$work/airfoil.poly|0.0108")
-if bench_make_lake "$work/lake.poly"; then cases+=("MESH2D lake|$work/lake.poly|0.0125"); fi
+cases=()
+if [[ $inputs == *" square "* ]]; then
+  "$B/afm_make_input" square-with-hole "$work/square.poly" 0.001367 > /dev/null
+  cases+=("square with hole|$work/square.poly|0.001367")
+fi
+if [[ $inputs == *" airfoil "* ]]; then
+  "$B/afm_make_input" multi-element-airfoil "$work/airfoil.poly" > /dev/null
+  cases+=("four-element airfoil|$work/airfoil.poly|0.0108")
+fi
+if [[ $inputs == *" lake "* ]] && bench_make_lake "$work/lake.poly"; then cases+=("MESH2D lake|$work/lake.poly|0.0125"); fi
+if (( ${#cases[@]} == 0 )); then
+  echo "AFM_QUALITY_INPUTS='${AFM_QUALITY_INPUTS:-}' names none of: square airfoil lake" >&2
+  exit 1
+fi
 
 {
   echo "# Quality on 2 threads against 1 thread, over sizes"
@@ -34,7 +58,8 @@ if bench_make_lake "$work/lake.poly"; then cases+=("MESH2D lake|$work/lake.poly|
   echo "\`afmesh_2 --version\`: $("$B/afmesh_2" --version)."
   echo "Share of triangles with radius ratio 2r/R above 0.9, in the whole mesh and within two sizes of the"
   echo "2-thread run's cut (triangles whose centroid lies there; the 1-thread mesh has no cut, the same band is"
-  echo "measured in it). Five sizes h (1 + k/2500), k = -2..2, around each input's size."
+  echo "measured in it). ${#step_list[@]} sizes h (1 + k/2500), k = ${step_list[*]}, around each input's size;"
+  echo "the means' differences with their standard error."
   echo
   echo "| input | h | triangles, 1 / 2 threads | share > 0.9, 1 thread | share > 0.9, 2 threads | difference | band triangles | band share, 1 thread | band share, 2 threads | band difference |"
   echo "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
@@ -44,7 +69,7 @@ for c in "${cases[@]}"; do
   IFS='|' read -r name poly h0 <<< "$c"
   rows="$work/rows.txt"
   : > "$rows"
-  for k in -2 -1 0 1 2; do
+  for k in "${step_list[@]}"; do
     h=$(python3 -c "print('%.7g' % ($h0 * (1 + $k / 2500)))")
     "$B/afmesh_2" "$poly" --size "$h" --threads 1 -o "$work/one.off" > /dev/null
     "$B/afmesh_2" "$poly" --size "$h" --threads 2 -o "$work/two.off" --stats > "$work/two.json"
@@ -85,10 +110,17 @@ EOF
     echo "$name h=$h: $(tail -1 "$rows")" >&2
   done
   python3 - "$rows" >> "$out" <<'EOF'
-import sys
+import math, sys
 rows = [l.strip().split("|") for l in open(sys.argv[1]) if l.strip()]
 def pct(x): return "%.2f%%" % (100 * x)
 def diff(x): return "%+.2f" % (100 * x)
+def standard_error(xs):
+    if len(xs) < 2: return float("nan")
+    mean = sum(xs) / len(xs)
+    return math.sqrt(sum((x - mean) ** 2 for x in xs) / (len(xs) - 1) / len(xs))
+def diff_se(xs): return "%s ± %.2f" % (diff(sum(xs) / len(xs)), 100 * standard_error(xs))
+whole_diffs = [float(r[5]) - float(r[4]) for r in rows]
+band_diffs = [float(r[9]) - float(r[8]) for r in rows]
 m = {k: 0.0 for k in ("s1", "s2", "bs1", "bs2")}
 for name, h, n1, n2, s1, s2, b1, b2, bs1, bs2 in rows:
     s1, s2, bs1, bs2 = map(float, (s1, s2, bs1, bs2))
@@ -97,8 +129,8 @@ for name, h, n1, n2, s1, s2, b1, b2, bs1, bs2 in rows:
         name, h, format(int(n1), ","), format(int(n2), ","), pct(s1), pct(s2), diff(s2 - s1),
         format(int(b1), ","), format(int(b2), ","), pct(bs1), pct(bs2), diff(bs2 - bs1)))
 print("| %s | mean of %d | | %s | %s | %s | | %s | %s | %s |" % (
-    rows[0][0], len(rows), pct(m["s1"]), pct(m["s2"]), diff(m["s2"] - m["s1"]), pct(m["bs1"]), pct(m["bs2"]),
-    diff(m["bs2"] - m["bs1"])))
+    rows[0][0], len(rows), pct(m["s1"]), pct(m["s2"]), diff_se(whole_diffs), pct(m["bs1"]), pct(m["bs2"]),
+    diff_se(band_diffs)))
 EOF
 done
 echo "wrote $out" >&2
