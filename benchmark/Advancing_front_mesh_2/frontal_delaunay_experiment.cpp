@@ -1,0 +1,381 @@
+// An experiment, not part of the package: what would one step of the
+// mesher cost if the unmeshed region stayed triangulated? Issue 22 asks the
+// serial mesher to be as fast as Triangle, and our step loop spends most of
+// its instructions finding, among the front points near an edge, the apex
+// that is visible from the edge (Merriam's iteration with the free-sector
+// and crossing tests, Delaunay_apex.h, Front_visibility.h): the unmeshed
+// region has no triangles to tell what is visible. Rebay's frontal-Delaunay
+// method (J. Comput. Phys. 106, 1993) keeps the Delaunay triangulation of
+// the boundary points as the unmeshed region's triangulation, places the
+// new point ahead of a front edge as Mavriplis does, and inserts it by
+// Bowyer-Watson: the conflict zone replaces the apex search, the broken
+// circles' search and the visibility tests at once.
+//
+// This program meshes one input both ways, from the same constrained
+// Delaunay triangulation of it, at a uniform size or under a graded field,
+// and prints the meshing time (fastest of the runs), the triangle count,
+// the quality and the independent checker's verdict of each. The
+// experiment's loop is deliberately plain: CGAL's CDT as it is, a size
+// function, no answer yet for the faces whose new point it must refuse. It
+// takes the active triangles in one of two orders:
+// - largest circumradius first (a binary heap), as Rebay and Gmsh's
+//   Frontal-Delaunay take them: consecutive steps then jump along the whole
+//   front, and from 1e5 to 1e6 triangles the time per triangle grew by 74%
+//   (cache misses);
+// - by classes of circumradius over the accepted one a quarter octave wide,
+//   the largest class first, and within a class the newest first: the next
+//   step mostly works next to the last point, and the time per triangle
+//   grew by 28% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
+//
+//   frontal_delaunay_experiment INPUT.poly H [RUNS]      (uniform size H)
+//   frontal_delaunay_experiment --radial-airfoil [RUNS]  (a graded field)
+#include "bench_common.h" // first: it defines the allocation functions (heap_meter.h)
+
+#include "afm_geometries.h"
+#include "afm_test_mesh.h"
+
+#include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesher_2.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_criteria_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <iterator>
+#include <list>
+#include <queue>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point;
+typedef afm_test::Poly_data Poly_data;
+
+// ------------------------------------------------ the frontal-Delaunay loop
+
+// A face's state: accepted (small enough, final) or not, and a stamp that
+// names this incarnation of the face (the heap's entries of a face the
+// insertions destroyed or reused carry an older stamp).
+struct Face_state
+{
+  unsigned stamp = 0;
+  bool accepted = false;
+};
+
+typedef CGAL::Triangulation_vertex_base_2<K> Vb;
+typedef CGAL::Constrained_triangulation_face_base_2<K> Cfb;
+typedef CGAL::Triangulation_face_base_with_info_2<Face_state, K, Cfb> Ifb;
+typedef CGAL::Delaunay_mesh_face_base_2<K, Ifb> Fb;
+typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+typedef CGAL::Constrained_Delaunay_triangulation_2<
+  K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag> Frontal_cdt;
+typedef Frontal_cdt::Face_handle Frontal_face;
+
+struct Frontal_statistics
+{
+  std::size_t inserted = 0;
+  std::size_t given_up = 0; // faces kept because their point fell outside the domain, on the
+                            // cavity's boundary or within a quarter of the size of a constraint
+};
+
+double circumradius(Frontal_face f)
+{
+  return std::sqrt(CGAL::squared_radius(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+}
+
+// The active faces, in one of the two orders above. An entry is a face
+// with its circumradius over the accepted one and its stamp when pushed.
+struct Active_entry
+{
+  double r;
+  Frontal_face f;
+  unsigned stamp;
+  bool operator<(const Active_entry& o) const { return r < o.r; }
+};
+
+class Active_faces
+{
+public:
+  explicit Active_faces(bool local_order) : local_(local_order) {}
+  bool empty() const { return size_ == 0; }
+  void push(const Active_entry& e)
+  {
+    ++size_;
+    if(!local_) {
+      heap_.push(e);
+      return;
+    }
+    const std::size_t c = class_of(e.r);
+    if(c >= classes_.size()) classes_.resize(c + 1);
+    classes_[c].push_back(e);
+    top_ = (std::max)(top_, c);
+  }
+  Active_entry pop()
+  {
+    --size_;
+    if(!local_) {
+      const Active_entry e = heap_.top();
+      heap_.pop();
+      return e;
+    }
+    while(classes_[top_].empty()) --top_;
+    const Active_entry e = classes_[top_].back();
+    classes_[top_].pop_back();
+    return e;
+  }
+
+private:
+  // quarter octaves of the ratio (all ratios up to 1 share class 0; the
+  // largest classes are capped)
+  std::size_t class_of(double r) const
+  {
+    const double octaves = std::log2((std::max)(r, 1.));
+    return std::size_t((std::min)(4 * octaves, 1000.));
+  }
+
+  bool local_;
+  std::size_t size_ = 0, top_ = 0;
+  std::priority_queue<Active_entry> heap_;
+  std::vector<std::vector<Active_entry> > classes_;
+};
+
+// the target edge length at a point
+typedef std::function<double(double, double)> Size_function;
+
+Frontal_statistics frontal_delaunay(Frontal_cdt& cdt, const std::list<Point>& seeds, const Size_function& size,
+                                    bool local_order)
+{
+  CGAL::Delaunay_mesher_2<Frontal_cdt, CGAL::Delaunay_mesh_criteria_2<Frontal_cdt> >::mark_facets(
+    cdt, seeds.begin(), seeds.end(), false);
+  // a face is final once its circumradius is at most h / sqrt(2), 1.22 times
+  // the equilateral triangle's (Gmsh's bound), h the size at its centroid;
+  // the new point aims at the equilateral triangle's circumradius h / sqrt(3)
+  // for the size at the front edge's midpoint
+  auto oversize = [&](Frontal_face f) {
+    const Point& a = f->vertex(0)->point();
+    const Point& b = f->vertex(1)->point();
+    const Point& c = f->vertex(2)->point();
+    return circumradius(f) * std::sqrt(2.) / size((a.x() + b.x() + c.x()) / 3, (a.y() + b.y() + c.y()) / 3);
+  };
+  Active_faces active(local_order);
+  unsigned stamp = 0;
+  // across edge i of f lies the meshed region or the domain's boundary
+  auto on_front = [&](Frontal_face f, int i) {
+    const Frontal_face g = f->neighbor(i);
+    return f->is_constrained(i) || cdt.is_infinite(g) || !g->is_in_domain() || g->info().accepted;
+  };
+  auto consider = [&](Frontal_face f) {
+    if(cdt.is_infinite(f) || !f->is_in_domain() || f->info().accepted) return;
+    for(int i = 0; i < 3; ++i)
+      if(on_front(f, i)) {
+        active.push(Active_entry{oversize(f), f, f->info().stamp});
+        return;
+      }
+  };
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    f->info().stamp = ++stamp;
+    f->info().accepted = f->is_in_domain() && oversize(f) <= 1;
+  }
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) consider(f);
+
+  Frontal_statistics st;
+  std::vector<Frontal_face> conflicts;
+  std::vector<Frontal_cdt::Edge> hole;
+  while(!active.empty()) {
+    const Active_entry e = active.pop();
+    const Frontal_face f = e.f;
+    if(f->info().stamp != e.stamp || f->info().accepted) continue;
+    // its shortest front edge a -> b (the face on its left)
+    int edge = -1;
+    double l2 = 0;
+    for(int i = 0; i < 3; ++i) {
+      if(!on_front(f, i)) continue;
+      const double li = CGAL::squared_distance(f->vertex(Frontal_cdt::cw(i))->point(),
+                                               f->vertex(Frontal_cdt::ccw(i))->point());
+      if(edge < 0 || li < l2) {
+        edge = i;
+        l2 = li;
+      }
+    }
+    const Point& a = f->vertex(Frontal_cdt::ccw(edge))->point();
+    const Point& b = f->vertex(Frontal_cdt::cw(edge))->point();
+    const double mx = 0.5 * (a.x() + b.x()), my = 0.5 * (a.y() + b.y()), half = 0.5 * std::sqrt(l2);
+    double nx = a.y() - b.y(), ny = b.x() - a.x();
+    const double nl = std::sqrt(nx * nx + ny * ny);
+    nx /= nl;
+    ny /= nl;
+    // Rebay's point: on the edge's bisector, making a triangle of the target
+    // circumradius, but not beyond the face's own circumcircle (whose
+    // centre lies at height q over the edge)
+    const Point c = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    const double q = (c.x() - mx) * nx + (c.y() - my) * ny;
+    const double rho = size(mx, my) / std::sqrt(3.);
+    const double r = (std::min)((std::max)(rho, half), (half * half + q * q) / (2 * (std::max)(q, 1e-300)));
+    const double d = r + std::sqrt((std::max)(0., r * r - half * half));
+    const Point p(mx + d * nx, my + d * ny);
+    conflicts.clear();
+    hole.clear();
+    cdt.get_conflicts_and_boundary(p, std::back_inserter(conflicts), std::back_inserter(hole), f);
+    // the new point must lie strictly inside the cavity's boundary, or the
+    // star would hold a flat triangle (a point on a constraint); the
+    // boundary's edges are given by the faces outside it
+    bool inside = !conflicts.empty() && !cdt.is_infinite(conflicts.front()) && conflicts.front()->is_in_domain();
+    // and keep a quarter of the size from the constraints there: a point a
+    // rounding error inside a boundary segment makes a valid but flat
+    // triangle, which the checker rightly reads as a point on the segment
+    const double clearance2 = 0.0625 * 3 * rho * rho; // (h / 4)^2
+    for(std::size_t i = 0; inside && i < hole.size(); ++i) {
+      const Frontal_face g = hole[i].first;
+      const int j = hole[i].second;
+      const Point& u = g->vertex(Frontal_cdt::ccw(j))->point();
+      const Point& w = g->vertex(Frontal_cdt::cw(j))->point();
+      inside = CGAL::orientation(u, w, p) == CGAL::RIGHT_TURN &&
+               !(g->is_constrained(j) && CGAL::squared_distance(K::Segment_2(u, w), p) < clearance2);
+    }
+    if(!inside) {
+      // the point falls outside the domain, on a vertex or on the cavity's
+      // boundary: the face stays
+      f->info().accepted = true;
+      ++st.given_up;
+      for(int i = 0; i < 3; ++i) consider(f->neighbor(i));
+      continue;
+    }
+    for(Frontal_face g : conflicts) g->info().stamp = 0;
+    const Frontal_cdt::Vertex_handle v = cdt.star_hole(p, hole.begin(), hole.end(), conflicts.begin(), conflicts.end());
+    ++st.inserted;
+    auto fc = cdt.incident_faces(v), done = fc;
+    do {
+      fc->set_in_domain(true);
+      fc->info().stamp = ++stamp;
+      fc->info().accepted = oversize(fc) <= 1;
+    } while(++fc != done);
+    do {
+      const Frontal_face g = fc;
+      consider(g);
+      consider(g->neighbor(g->index(v)));
+    } while(++fc != done);
+  }
+  return st;
+}
+
+// ------------------------------------------------------------ measurement
+
+template <class CDT>
+void report(const std::string& name, const CDT& cdt, const Poly_data& in, double seconds, int runs,
+            const std::string& extra)
+{
+  const afm_check::Mesh m = afm_test::extract_mesh(cdt);
+  const afm_bench::Quality q = afm_bench::quality(m);
+  const afm_check::Report r = afm_test::check_split_mesh(in, m);
+  std::cout << "| " << name << " | " << m.triangles.size() << " | " << seconds << " (fastest of " << runs
+            << ") | " << q.mean << " | " << 100 * q.share_above_0_9 << "% | " << q.min << " | "
+            << (r.ok ? std::string("valid") : "INVALID: " + r.summary()) << " | " << extra << " |\n";
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Meshes `in` `runs` times with `mesh(cdt, seeds)`, timed from the input's
+// triangulation to the finished mesh; returns the fastest time and keeps
+// the first run's mesh in `kept`.
+template <class CDT, class Mesh>
+double fastest_of(int runs, const Poly_data& in, CDT& kept, Mesh mesh)
+{
+  double best = 0;
+  for(int run = 0; run < runs; ++run) {
+    CDT cdt;
+    afm_test::build_cdt(cdt, in);
+    const std::list<Point> seeds = afm_test::seeds_of<CDT>(in);
+    const auto t0 = std::chrono::steady_clock::now();
+    mesh(cdt, seeds);
+    const double s = seconds_since(t0);
+    if(run == 0 || s < best) best = s;
+    if(run == 0) kept = cdt;
+  }
+  return best;
+}
+
+// Ours (its boundary discretisation on when `split`), then the experiment
+// in both orders (never splitting: for the inputs here the boundary is at
+// the size, or ours is told not to split either), on `in` under `size`.
+void compare(const Poly_data& in, const Size_function& size, bool split, int runs)
+{
+  std::cout << "| step loop | triangles | meshing seconds | mean radius ratio | share > 0.9 | min radius ratio | "
+               "checker | notes |\n|---|--:|--:|--:|--:|--:|---|---|\n";
+  typedef afm_test::Types<K>::CDT CDT;
+  auto sizing = [&size](const Point& p) { return K::FT(size(p.x(), p.y())); };
+  CDT ours;
+  const double ours_seconds = fastest_of(runs, in, ours, [&](CDT& cdt, const std::list<Point>& seeds) {
+    CGAL::Advancing_front_mesher_2<CDT, decltype(sizing)> mesher(cdt, sizing);
+    mesher.set_constraint_splitting(split);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.refine_mesh();
+  });
+  report("ours (Mavriplis, apex search and visibility)", ours, in, ours_seconds, runs,
+         std::to_string(ours.number_of_vertices() - in.points.size()) + " points");
+  for(const bool local_order : {false, true}) {
+    Frontal_cdt kept;
+    Frontal_statistics st;
+    bool first = true;
+    const double seconds = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
+      const Frontal_statistics s1 = frontal_delaunay(cdt, seeds, size, local_order);
+      if(first) st = s1;
+      first = false;
+    });
+    report(local_order ? "experiment (Rebay), radius classes, newest first"
+                       : "experiment (Rebay), largest circumradius first",
+           kept, in, seconds, runs,
+           std::to_string(st.inserted) + " points, " + std::to_string(st.given_up) + " faces given up");
+  }
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string usage = "usage: frontal_delaunay_experiment INPUT.poly H [RUNS]\n"
+                            "       frontal_delaunay_experiment --radial-airfoil [RUNS]\n";
+  if(argc < 2) {
+    std::cerr << usage;
+    return 1;
+  }
+  try {
+    if(std::string(argv[1]) == "--radial-airfoil") {
+      // graded_quality's steeper-than-gentle radial case: the four elements
+      // (15 and 64 points per element side, the boundary at the size) under
+      // h = 0.004 + 0.03 d, d the distance from the main element's mid-chord;
+      // ours without its boundary discretisation, as there
+      const int runs = argc > 2 ? std::atoi(argv[2]) : 3;
+      const Poly_data in = afm_geometry::multi_element_airfoil(15, 64);
+      compare(in, [](double x, double y) { return 0.004 + 0.03 * std::hypot(x - 0.5, y); }, false, (std::max)(runs, 1));
+      return 0;
+    }
+    if(argc < 3) {
+      std::cerr << usage;
+      return 1;
+    }
+    const Poly_data in = CGAL::Advancing_front_mesh_2::IO::read_poly(argv[1]);
+    const double h = std::atof(argv[2]);
+    const int runs = argc > 3 ? std::atoi(argv[3]) : 3;
+    if(!(h > 0) || runs < 1) {
+      std::cerr << "H must be positive and RUNS at least 1\n";
+      return 1;
+    }
+    compare(in, [h](double, double) { return h; }, true, runs);
+  } catch(const std::exception& e) {
+    std::cerr << argv[1] << ": " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
