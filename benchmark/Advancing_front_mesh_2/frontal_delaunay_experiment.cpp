@@ -20,12 +20,12 @@
 // takes the active triangles in one of two orders:
 // - largest circumradius first (a binary heap), as Rebay and Gmsh's
 //   Frontal-Delaunay take them: consecutive steps then jump along the whole
-//   front, and from 1e5 to 1e6 triangles the time per triangle grew by 74%
+//   front, and from 1e5 to 1e6 triangles the time per triangle doubled
 //   (cache misses);
 // - by classes of circumradius over the accepted one a quarter octave wide,
 //   the largest class first, and within a class the newest first: the next
 //   step mostly works next to the last point, and the time per triangle
-//   grew by 28% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
+//   grew by 35% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
 //
 //   frontal_delaunay_experiment INPUT.poly H [RUNS]      (uniform size H)
 //   frontal_delaunay_experiment --radial-airfoil [RUNS]  (a graded field)
@@ -269,41 +269,48 @@ Frontal_statistics frontal_delaunay(Frontal_cdt& cdt, const std::list<Point>& se
 
 // ------------------------------------------------------------ measurement
 
+// The meshing's fastest time, and the heap it added at its peak (first run).
+struct Timing
+{
+  double seconds = 0;
+  int runs = 0;
+  std::size_t peak_bytes = 0;
+};
+
 template <class CDT>
-void report(const std::string& name, const CDT& cdt, const Poly_data& in, double seconds, int runs,
-            const std::string& extra)
+void report(const std::string& name, const CDT& cdt, const Poly_data& in, const Timing& t, const std::string& extra)
 {
   const afm_check::Mesh m = afm_test::extract_mesh(cdt);
   const afm_bench::Quality q = afm_bench::quality(m);
   const afm_check::Report r = afm_test::check_split_mesh(in, m);
-  std::cout << "| " << name << " | " << m.triangles.size() << " | " << seconds << " (fastest of " << runs
-            << ") | " << q.mean << " | " << 100 * q.share_above_0_9 << "% | " << q.min << " | "
+  std::cout << "| " << name << " | " << m.triangles.size() << " | " << t.seconds << " (fastest of " << t.runs
+            << ") | " << double(t.peak_bytes) / double(m.triangles.size()) << " | " << q.mean << " | "
+            << 100 * q.share_above_0_9 << "% | " << q.min << " | "
             << (r.ok ? std::string("valid") : "INVALID: " + r.summary()) << " | " << extra << " |\n";
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // Meshes `in` `runs` times with `mesh(cdt, seeds)`, timed from the input's
-// triangulation to the finished mesh; returns the fastest time and keeps
-// the first run's mesh in `kept`.
+// triangulation to the finished mesh; keeps the first run's mesh in `kept`.
 template <class CDT, class Mesh>
-double fastest_of(int runs, const Poly_data& in, CDT& kept, Mesh mesh)
+Timing fastest_of(int runs, const Poly_data& in, CDT& kept, Mesh mesh)
 {
-  double best = 0;
+  Timing t;
+  t.runs = runs;
   for(int run = 0; run < runs; ++run) {
     CDT cdt;
     afm_test::build_cdt(cdt, in);
     const std::list<Point> seeds = afm_test::seeds_of<CDT>(in);
-    const auto t0 = std::chrono::steady_clock::now();
+    afm_bench::Meter meter;
+    meter.start();
     mesh(cdt, seeds);
-    const double s = seconds_since(t0);
-    if(run == 0 || s < best) best = s;
-    if(run == 0) kept = cdt;
+    meter.stop();
+    if(run == 0 || meter.seconds() < t.seconds) t.seconds = meter.seconds();
+    if(run == 0) {
+      t.peak_bytes = meter.peak_bytes();
+      kept = cdt;
+    }
   }
-  return best;
+  return t;
 }
 
 // Ours (its boundary discretisation on when `split`), then the experiment
@@ -311,31 +318,31 @@ double fastest_of(int runs, const Poly_data& in, CDT& kept, Mesh mesh)
 // the size, or ours is told not to split either), on `in` under `size`.
 void compare(const Poly_data& in, const Size_function& size, bool split, int runs)
 {
-  std::cout << "| step loop | triangles | meshing seconds | mean radius ratio | share > 0.9 | min radius ratio | "
-               "checker | notes |\n|---|--:|--:|--:|--:|--:|---|---|\n";
+  std::cout << "| step loop | triangles | meshing seconds | peak heap bytes / triangle | mean radius ratio | "
+               "share > 0.9 | min radius ratio | checker | notes |\n|---|--:|--:|--:|--:|--:|--:|---|---|\n";
   typedef afm_test::Types<K>::CDT CDT;
   auto sizing = [&size](const Point& p) { return K::FT(size(p.x(), p.y())); };
   CDT ours;
-  const double ours_seconds = fastest_of(runs, in, ours, [&](CDT& cdt, const std::list<Point>& seeds) {
+  const Timing ours_timing = fastest_of(runs, in, ours, [&](CDT& cdt, const std::list<Point>& seeds) {
     CGAL::Advancing_front_mesher_2<CDT, decltype(sizing)> mesher(cdt, sizing);
     mesher.set_constraint_splitting(split);
     mesher.set_seeds(seeds.begin(), seeds.end());
     mesher.refine_mesh();
   });
-  report("ours (Mavriplis, apex search and visibility)", ours, in, ours_seconds, runs,
+  report("ours (Mavriplis, apex search and visibility)", ours, in, ours_timing,
          std::to_string(ours.number_of_vertices() - in.points.size()) + " points");
   for(const bool local_order : {false, true}) {
     Frontal_cdt kept;
     Frontal_statistics st;
     bool first = true;
-    const double seconds = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
+    const Timing timing = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
       const Frontal_statistics s1 = frontal_delaunay(cdt, seeds, size, local_order);
       if(first) st = s1;
       first = false;
     });
     report(local_order ? "experiment (Rebay), radius classes, newest first"
                        : "experiment (Rebay), largest circumradius first",
-           kept, in, seconds, runs,
+           kept, in, timing,
            std::to_string(st.inserted) + " points, " + std::to_string(st.given_up) + " faces given up");
   }
 }
