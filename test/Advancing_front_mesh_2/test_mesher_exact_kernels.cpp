@@ -77,19 +77,8 @@ void mesh_coordinates_not_doubles(const std::string& name, std::initializer_list
     const double h = g.uniform(0.01, 0.03) * d.scale / 5;
     const std::string label = name + ": seed " + std::to_string(seed) + ", coordinates divided by 3 and 7";
     CDT cdt;
-    afm_test::Poly_data rounded = d.pslg; // what the checker reads
-    std::vector<typename CDT::Vertex_handle> vh;
-    for(std::size_t i = 0; i < d.pslg.points.size(); ++i) {
-      const Point p(FT(d.pslg.points[i][0]) / sx, FT(d.pslg.points[i][1]) / sy);
-      vh.push_back(cdt.insert(p));
-      rounded.points[i] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y())}};
-    }
-    for(const auto& s : d.pslg.segments) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
     std::list<Point> seeds;
-    for(std::size_t i = 0; i < d.pslg.holes.size(); ++i) {
-      seeds.push_back(Point(FT(d.pslg.holes[i][0]) / sx, FT(d.pslg.holes[i][1]) / sy));
-      rounded.holes[i] = {{CGAL::to_double(seeds.back().x()), CGAL::to_double(seeds.back().y())}};
-    }
+    const afm_test::Poly_data rounded = afm_test::insert_divided(cdt, d.pslg, sx, sy, seeds);
     afm_test::Mesher<CDT> mesher(cdt, CGAL::Advancing_front_mesh_2::Uniform_sizing_field_2<K>(h));
     mesher.set_seeds(seeds.begin(), seeds.end());
     mesher.init();

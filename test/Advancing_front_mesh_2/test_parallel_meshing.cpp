@@ -16,7 +16,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -274,4 +276,48 @@ AFM_TEST_CASE(test_parallel_time_stamps_distinct)
   AFM_CHECK(cdt.is_valid());
   AFM_CHECK(distinct_time_stamps(cdt.tds().faces()));
   AFM_CHECK(distinct_time_stamps(cdt.tds().vertices()));
+}
+
+// Epeck with coordinates that are not doubles (the serial test's random
+// domains 1, 5 and 7, every x divided exactly by 3 and every y by 7, at a
+// fifth of the size above) on 2 and 4 threads: the parts share the input's
+// lazy exact numbers, whose exact values CGAL computes on first use from
+// any thread (std::call_once), and the cuts' points are made from them.
+// Every merged mesh is valid under CGAL and the checker (which reads the
+// input rounded to doubles, and the split points within its tolerance).
+AFM_TEST_CASE(test_parallel_epeck_coordinates_not_doubles)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  typedef afm_test::Types<Epeck>::CDT Exact_cdt;
+  typedef Epeck::FT FT;
+  typedef Epeck::Point_2 Point;
+  const FT sx(3), sy(7);
+  std::size_t in_parts = 0;
+  for(const std::uint64_t seed : {1, 5, 7}) {
+    afm_random::Generator g(seed);
+    const afm_random::Domain d = g.domain();
+    const double h = g.uniform(0.01, 0.03) * d.scale / 5;
+    for(const std::size_t threads : {2, 4}) {
+      const std::string label = "Epeck, seed " + std::to_string(seed) + ", coordinates divided by 3 and 7, " +
+                                std::to_string(threads) + " threads";
+      Exact_cdt cdt;
+      std::list<Point> seeds;
+      const Poly_data rounded = afm_test::insert_divided(cdt, d.pslg, sx, sy, seeds);
+      AFM::Parallel_mesh_statistics st;
+      const AFM::Mesh_return_code rc =
+        AFM::mesh_in_parallel_2(cdt, seeds.begin(), seeds.end(), AFM::Uniform_sizing_field_2<Epeck>(h), false,
+                                threads, st, true, AFM::internal::No_split_callback());
+      AFM_CHECK_MSG(rc == AFM::MESH_COMPLETE, label << ": return code " << int(rc));
+      AFM_CHECK_MSG(cdt.is_valid(), label << ": CGAL's is_valid() failed");
+      const afm_check::Report report = afm_test::check_split_mesh(rounded, afm_test::extract_mesh(cdt));
+      std::cout << "  " << label << ": " << st.parts << " parts"
+                << (st.parts == 1 ? " (" + st.one_piece_reason + ")" : std::string()) << ", " << report.summary()
+                << "\n";
+      AFM_CHECK_MSG(report.ok, label << ": " << report.summary());
+      if(st.parts > 1) ++in_parts;
+    }
+  }
+  // (the serial test's domains, cut in parts at least once, so that the
+  // threads share lazy numbers)
+  AFM_CHECK_MSG(in_parts > 0, "no domain was meshed in parts");
 }

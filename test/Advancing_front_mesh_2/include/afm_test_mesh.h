@@ -88,6 +88,31 @@ std::list<typename CDT::Point> seeds_of(const Poly_data& in)
   return seeds;
 }
 
+// Inserts `in` into `cdt` with every x divided exactly by `sx` and every
+// y by `sy` in the kernel's number type (coordinates that are not doubles
+// for an exact kernel), its hole seeds into `seeds`; returns the input as
+// the checker reads it, the points and seeds rounded to doubles.
+template <class CDT>
+Poly_data insert_divided(CDT& cdt, const Poly_data& in, const typename CDT::Geom_traits::FT& sx,
+                         const typename CDT::Geom_traits::FT& sy, std::list<typename CDT::Point>& seeds)
+{
+  typedef typename CDT::Geom_traits::FT FT;
+  typedef typename CDT::Point Point;
+  Poly_data rounded = in;
+  std::vector<typename CDT::Vertex_handle> vh;
+  for(std::size_t i = 0; i < in.points.size(); ++i) {
+    const Point p(FT(in.points[i][0]) / sx, FT(in.points[i][1]) / sy);
+    vh.push_back(cdt.insert(p));
+    rounded.points[i] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y())}};
+  }
+  for(const auto& s : in.segments) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
+  for(std::size_t i = 0; i < in.holes.size(); ++i) {
+    seeds.push_back(Point(FT(in.holes[i][0]) / sx, FT(in.holes[i][1]) / sy));
+    rounded.holes[i] = {{CGAL::to_double(seeds.back().x()), CGAL::to_double(seeds.back().y())}};
+  }
+  return rounded;
+}
+
 inline afm_check::Pslg to_pslg(const Poly_data& in)
 {
   afm_check::Pslg p;
