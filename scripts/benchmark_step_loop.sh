@@ -6,7 +6,8 @@
 # built from ../shared/tools/triangle when it is there, never shipped) with
 # its maximum area tuned to our triangle count, on the square with a hole at
 # about 1e5 and 1e6 triangles; then ours and the experiment on a graded field
-# (graded_quality's four-element airfoil under h = 0.004 + 0.03 d). Meshing times are the fastest of 3 runs (single
+# (graded_quality's four-element airfoil under h = 0.004 + 0.03 d) and on
+# the test suite's first 200 random domains. Meshing times are the fastest of 3 runs (single
 # runs on this virtual machine vary by 20% and more). Writes
 # doc/Advancing_front_mesh_2/benchmark/step_loop_results.md.
 set -euo pipefail
@@ -64,4 +65,11 @@ out=doc/Advancing_front_mesh_2/benchmark/step_loop_results.md
   echo "ours without its boundary discretisation, as there."
   echo
   "$bench" --radial-airfoil 3
+  echo
+  echo "## The test suite's random domains"
+  echo
+  echo "Holes, free points, interior segments and sharp angles at any scale (test/.../afm_random_pslg.h), each at a uniform"
+  echo "size, the boundary discretised to it for both; every mesh goes through the checker."
+  echo
+  "$bench" --random 200
 } | tee "$out"

@@ -20,21 +20,24 @@
 // takes the active triangles in one of two orders:
 // - largest circumradius first (a binary heap), as Rebay and Gmsh's
 //   Frontal-Delaunay take them: consecutive steps then jump along the whole
-//   front, and from 1e5 to 1e6 triangles the time per triangle doubled
+//   front, and from 1e5 to 1e6 triangles the time per triangle grew by 80%
 //   (cache misses);
 // - by classes of circumradius over the accepted one a quarter octave wide,
 //   the largest class first, and within a class the newest first: the next
 //   step mostly works next to the last point, and the time per triangle
-//   grew by 35% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
+//   grew by 38% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
 //
 //   frontal_delaunay_experiment INPUT.poly H [RUNS]      (uniform size H)
 //   frontal_delaunay_experiment --radial-airfoil [RUNS]  (a graded field)
+//   frontal_delaunay_experiment --random [DOMAINS]       (the tests' random domains)
 #include "bench_common.h" // first: it defines the allocation functions (heap_meter.h)
 
 #include "afm_geometries.h"
+#include "afm_random_pslg.h"
 #include "afm_test_mesh.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/read_poly.h>
+#include <CGAL/Advancing_front_mesh_2/split_constraints_to_size_2.h>
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_criteria_2.h>
@@ -313,9 +316,9 @@ Timing fastest_of(int runs, const Poly_data& in, CDT& kept, Mesh mesh)
   return t;
 }
 
-// Ours (its boundary discretisation on when `split`), then the experiment
-// in both orders (never splitting: for the inputs here the boundary is at
-// the size, or ours is told not to split either), on `in` under `size`.
+// Ours, then the experiment in both orders, on `in` under `size`; with
+// `split`, both discretise the boundary to the size first (ours in its
+// refiner, the experiment by the same split_constraints_to_size_2()).
 void compare(const Poly_data& in, const Size_function& size, bool split, int runs)
 {
   std::cout << "| step loop | triangles | meshing seconds | peak heap bytes / triangle | mean radius ratio | "
@@ -336,6 +339,7 @@ void compare(const Poly_data& in, const Size_function& size, bool split, int run
     Frontal_statistics st;
     bool first = true;
     const Timing timing = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
+      if(split) CGAL::Advancing_front_mesh_2::split_constraints_to_size_2(cdt, sizing);
       const Frontal_statistics s1 = frontal_delaunay(cdt, seeds, size, local_order);
       if(first) st = s1;
       first = false;
@@ -347,17 +351,77 @@ void compare(const Poly_data& in, const Size_function& size, bool split, int run
   }
 }
 
+// The test suite's random domains (holes, free points, interior segments,
+// sharp angles, any scale) at a uniform size, their boundaries discretised
+// to it: ours and the experiment (circle classes) on each, summed up.
+void random_domains(int n)
+{
+  typedef afm_test::Types<K>::CDT CDT;
+  struct Summary
+  {
+    int valid = 0, below_0_05 = 0;
+    double share_sum = 0;
+    std::vector<double> minima;
+  } ours, experiment;
+  int experiment_better = 0;
+  std::size_t given_up = 0;
+  auto add = [](Summary& s, const afm_check::Mesh& m, const afm_check::Report& r) {
+    const afm_bench::Quality q = afm_bench::quality(m);
+    s.valid += r.ok;
+    s.share_sum += q.share_above_0_9;
+    s.minima.push_back(q.min);
+    s.below_0_05 += q.min < 0.05;
+    return q.share_above_0_9;
+  };
+  for(int seed = 0; seed < n; ++seed) {
+    afm_random::Generator g{std::uint64_t(seed)};
+    const afm_random::Domain d = g.domain();
+    const double h = g.uniform(0.01, 0.03) * d.scale;
+    auto sizing = [h](const Point&) { return K::FT(h); };
+    CDT cdt;
+    afm_test::build_cdt(cdt, d.pslg);
+    const std::list<Point> seeds = afm_test::seeds_of<CDT>(d.pslg);
+    CGAL::Advancing_front_mesher_2<CDT, decltype(sizing)> mesher(cdt, sizing);
+    mesher.set_seeds(seeds.begin(), seeds.end());
+    mesher.refine_mesh();
+    const afm_check::Mesh m = afm_test::extract_mesh(cdt);
+    const double ours_share = add(ours, m, afm_test::check_split_mesh(d.pslg, m));
+    Frontal_cdt fcdt;
+    afm_test::build_cdt(fcdt, d.pslg);
+    CGAL::Advancing_front_mesh_2::split_constraints_to_size_2(fcdt, sizing);
+    given_up += frontal_delaunay(fcdt, afm_test::seeds_of<Frontal_cdt>(d.pslg), [h](double, double) { return h; }, true)
+                  .given_up;
+    const afm_check::Mesh fm = afm_test::extract_mesh(fcdt);
+    experiment_better += add(experiment, fm, afm_test::check_split_mesh(d.pslg, fm)) > ours_share;
+  }
+  std::cout << "| " << n << " random domains | valid | mean share > 0.9 | median smallest radius ratio | "
+               "domains with one below 0.05 |\n|---|--:|--:|--:|--:|\n";
+  for(Summary* s : {&ours, &experiment}) {
+    std::sort(s->minima.begin(), s->minima.end());
+    std::cout << "| " << (s == &ours ? "ours" : "experiment (Rebay), radius classes, newest first") << " | "
+              << s->valid << " | " << 100 * s->share_sum / n << "% | " << s->minima[s->minima.size() / 2] << " | "
+              << s->below_0_05 << " |\n";
+  }
+  std::cout << "\nThe experiment's share is the higher on " << experiment_better << " of " << n
+            << " domains; it gave up " << given_up << " faces in all.\n";
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
   const std::string usage = "usage: frontal_delaunay_experiment INPUT.poly H [RUNS]\n"
-                            "       frontal_delaunay_experiment --radial-airfoil [RUNS]\n";
+                            "       frontal_delaunay_experiment --radial-airfoil [RUNS]\n"
+                            "       frontal_delaunay_experiment --random [DOMAINS]\n";
   if(argc < 2) {
     std::cerr << usage;
     return 1;
   }
   try {
+    if(std::string(argv[1]) == "--random") {
+      random_domains(argc > 2 ? std::atoi(argv[2]) : 40);
+      return 0;
+    }
     if(std::string(argv[1]) == "--radial-airfoil") {
       // graded_quality's steeper-than-gentle radial case: the four elements
       // (15 and 64 points per element side, the boundary at the size) under
