@@ -13,7 +13,6 @@
 #include <initializer_list>
 #include <list>
 #include <string>
-#include <vector>
 
 namespace {
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;

@@ -100,6 +100,7 @@ Poly_data insert_divided(CDT& cdt, const Poly_data& in, const typename CDT::Geom
   typedef typename CDT::Point Point;
   Poly_data rounded = in;
   std::vector<typename CDT::Vertex_handle> vh;
+  vh.reserve(in.points.size());
   for(std::size_t i = 0; i < in.points.size(); ++i) {
     const Point p(FT(in.points[i][0]) / sx, FT(in.points[i][1]) / sy);
     vh.push_back(cdt.insert(p));
