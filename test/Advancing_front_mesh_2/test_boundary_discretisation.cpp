@@ -95,6 +95,28 @@ void mesh_unit_square_with_the_class(double angle, const std::string& label)
   check_unit_square_mesh<K>(cdt, in, label);
 }
 
+// A point of the fuzzer's finest grid: 2^-16 millionths offset to 1 (exact
+// doubles; a unit is about 70,000 units in the last place of 1).
+double fine_grid(int v) { return 1 + 1e-6 * (double(v) / 65536); }
+
+// Meshes `in` at the fuzzer's smallest size on its finest grid (segments
+// split), checks the triangulation and the mesh; returns how the split went.
+AFM::Constraint_split_statistics mesh_fine_grid_case(afm_test::Types<Epick>::CDT& cdt, const afm_test::Poly_data& in)
+{
+  typedef afm_test::Types<Epick>::CDT CDT;
+  afm_test::build_cdt(cdt, in);
+  afm_test::Mesher<CDT> mesher(cdt, afm_test::uniform<Epick>(2.5e-8));
+  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
+  const AFM::Constraint_split_statistics st = mesher.constraint_split_statistics();
+  AFM_CHECK(cdt.is_valid());
+  const afm_check::Report report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
+  std::cout << "  " << st.points_inserted << " cuts (" << st.points_rounded << " rounded), " << st.points_skipped
+            << " left out; " << report.summary() << "\n";
+  AFM_CHECK_MSG(report.ok, report.summary());
+  AFM_CHECK_MSG(mesher.statistics().number_of_faces > 0, "nothing was meshed");
+  return st;
+}
+
 } // namespace
 
 AFM_TEST_CASE(test_boundary_segment_cut_parameters)
@@ -278,25 +300,14 @@ AFM_TEST_CASE(test_boundary_catalogue_split_epeck)
 // checker can tell the chains apart.
 AFM_TEST_CASE(test_boundary_near_coincident_segments)
 {
-  typedef afm_test::Types<Epick>::CDT CDT;
-  // on a grid of 2^-16 millionths offset to 1 (exact doubles)
-  auto c = [](int v) { return 1 + 1e-6 * (double(v) / 65536); };
   afm_test::Poly_data in;
   for(const auto& g : {std::array<int, 4>{{2, 1280, 0, 10496}}, {{3, 65280, 3, 65283}}, {{255, 5895, 1792, 16128}}}) {
-    in.points.push_back({{c(g[0]), c(g[1])}});
-    in.points.push_back({{c(g[2]), c(g[3])}});
+    in.points.push_back({{fine_grid(g[0]), fine_grid(g[1])}});
+    in.points.push_back({{fine_grid(g[2]), fine_grid(g[3])}});
   }
   in.segments = {{{3, 0}}, {{2, 0}}, {{4, 3}}, {{4, 0}}};
-  CDT cdt;
-  afm_test::build_cdt(cdt, in);
-  afm_test::Mesher<CDT> mesher(cdt, afm_test::uniform<Epick>(2.5e-8));
-  AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
-  const AFM::Constraint_split_statistics& st = mesher.constraint_split_statistics();
-  AFM_CHECK(cdt.is_valid());
-  const afm_check::Report report = afm_test::check_split_mesh(in, afm_test::extract_mesh(cdt));
-  std::cout << "  " << st.points_inserted << " cuts (" << st.points_rounded << " rounded), " << st.points_skipped
-            << " left out; " << report.summary() << "\n";
-  AFM_CHECK_MSG(report.ok, report.summary());
+  afm_test::Types<Epick>::CDT cdt;
+  const AFM::Constraint_split_statistics st = mesh_fine_grid_case(cdt, in);
   AFM_CHECK_MSG(st.points_skipped > 0, "no cut was left out between segments an ulp apart");
   // no vertex that is not an input point lies within the checker's 16 units
   // in the last place of two input segments
@@ -313,6 +324,23 @@ AFM_TEST_CASE(test_boundary_near_coincident_segments)
     }
     AFM_CHECK_MSG(near <= 1, "vertex " << v->point() << " lies within rounding of " << near << " input segments");
   }
+}
+
+// A thin triangle on the fine grid (one unit wide, 64,000 long) whose cuts
+// fit nowhere: each is tried by taking its constraint out and putting it
+// back, which makes new faces even when the cut is left out (a fuzzer's
+// find: the mesher then lost the domain's marks and meshed nothing). The
+// mesher marks the domain again after any splitting.
+AFM_TEST_CASE(test_boundary_left_out_cuts_keep_the_domain)
+{
+  afm_test::Poly_data in;
+  for(const auto& g : {std::array<int, 2>{{2, 1280}}, {{0, 55552}}, {{3, 65280}}, {{3, 65283}}, {{255, 5895}},
+                       {{1792, 16128}}})
+    in.points.push_back({{fine_grid(g[0]), fine_grid(g[1])}});
+  in.segments = {{{3, 0}}, {{3, 2}}, {{0, 2}}};
+  afm_test::Types<Epick>::CDT cdt;
+  const AFM::Constraint_split_statistics st = mesh_fine_grid_case(cdt, in);
+  AFM_CHECK_MSG(st.points_inserted == 0 && st.points_skipped > 0, "the case no longer leaves every cut out");
 }
 
 // An input point exactly on a segment that bounds only a hole: the

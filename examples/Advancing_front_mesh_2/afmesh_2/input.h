@@ -241,10 +241,10 @@ void split_boundary(const Options& opt, Input<K>& in)
         in.tags.split_constraint(a, b, v);
       });
     // the faces the cuts made are marked as the input's were (the tagging
-    // sink of a streamed run reads the regions and the boundary from them)
-    if(in.split.points_inserted > 0)
-      CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> >::mark_facets(in.cdt, in.seeds.begin(),
-                                                                                     in.seeds.end());
+    // sink of a streamed run reads the regions and the boundary from them),
+    // even when no cut went in: one left out may have made new faces
+    CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> >::mark_facets(in.cdt, in.seeds.begin(),
+                                                                                   in.seeds.end());
     return;
   }
   for(const auto& e : in.cdt.constrained_edges()) {

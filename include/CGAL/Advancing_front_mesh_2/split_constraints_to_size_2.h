@@ -359,14 +359,16 @@ unit in the last place of each other). A point that fits nowhere (another
 vertex or constraint within that distance, or, for a
 `Constrained_triangulation_plus_2`, a rounded point on the convex hull,
 whose constraint hierarchy would lose the edge) is left out
-(`points_skipped`): the triangulation is unchanged there and that piece
-stays longer. In the tests' 300 random domains with `Epick`, 9,736 cut
+(`points_skipped`) and that piece stays longer; the triangulation is then
+the same there, but its faces may be new ones (the constraint was taken
+out and put back). In the tests' 300 random domains with `Epick`, 9,736 cut
 points were inserted, 8,913 of them rounded, none left out.
 
-The faces the splits make are new faces of the triangulation: Mesh_2's
-in-domain marks are not kept, so mark the domain again
-(`Delaunay_mesher_2::mark_facets()`) when they are needed before meshing
-(the mesher marks it itself).
+The faces the splits make are new faces of the triangulation, and so may
+be the faces at a cut left out: Mesh_2's in-domain marks are not kept, so
+mark the domain again (`Delaunay_mesher_2::mark_facets()`) after every
+call whose marks are needed before meshing, whether or not points were
+inserted (the mesher marks it itself).
 
 Each split of the edge `(a, b)` at the new vertex `v` is reported as
 `on_split(a, b, v)` (`Markers_and_regions_2::split_constraint()` carries a

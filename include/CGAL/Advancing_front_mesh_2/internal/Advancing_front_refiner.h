@@ -230,12 +230,12 @@ void Advancing_front_refiner<Tr, S, V, P, C>::init(On_init on_init)
   // marked again: the caller splits)
   if(split_constraints && !keep_domain_marks) {
     // the constraints that bound or cross the domain, to the size field;
-    // the faces the splits made are marked again
+    // the faces the splits made are marked again, even when no point went
+    // in: a cut left out may have taken its constraint out and put it back
     split_statistics = split_constraints_to_size_2(ctx_.tr, size_.sizing_field(),
                                                    Constraint_touches_domain<Tr>{&ctx_.tr},
                                                    internal::No_split_callback());
-    if(split_statistics.points_inserted > 0)
-      Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
+    Mesh_2_mesher::mark_facets(ctx_.tr, seeds.begin(), seeds.end(), seeds_mark);
   }
   ctx_.set_scaling(Coordinate_scaling<Point>::for_triangulation(ctx_.tr));
   finished_ = !initial_front_.build();
