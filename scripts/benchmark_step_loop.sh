@@ -78,7 +78,8 @@ out=doc/Advancing_front_mesh_2/benchmark/step_loop_results.md
   echo "## The test suite's random domains"
   echo
   echo "Holes, free points, interior segments and sharp angles at any scale (test/.../afm_random_pslg.h), each at a uniform"
-  echo "size, the boundary discretised to it for both; every mesh goes through the checker."
+  echo "size, the boundary discretised to it for both; every mesh goes through the checker. Each loop also followed by"
+  echo "Mesh_2's Delaunay refinement of the triangles below 20 degrees (refine_to_minimum_angle_2(), afmesh_2 --min-angle 20)."
   echo
   "$bench" --random 200
 } | tee "$out.new"
