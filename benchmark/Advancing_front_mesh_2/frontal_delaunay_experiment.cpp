@@ -333,35 +333,49 @@ Timing fastest_of(int runs, const Poly_data& in, CDT& kept, Mesh mesh)
 // Ours, then the experiment in both orders, on `in` under `size`; with
 // `split`, both discretise the boundary to the size first (ours in its
 // refiner, the experiment by the same split_constraints_to_size_2()).
-void compare(const Poly_data& in, const Size_function& size, bool split, int runs)
+void compare(const Poly_data& in, const Size_function& size, bool split, int runs, bool refined_rows)
 {
   std::cout << "| step loop | triangles | meshing seconds | peak heap bytes / triangle | mean radius ratio | "
                "share > 0.9 | min radius ratio | checker | notes |\n|---|--:|--:|--:|--:|--:|--:|---|---|\n";
   typedef afm_test::Types<K>::CDT CDT;
   auto sizing = [&size](const Point& p) { return K::FT(size(p.x(), p.y())); };
-  CDT ours;
-  const Timing ours_timing = fastest_of(runs, in, ours, [&](CDT& cdt, const std::list<Point>& seeds) {
-    CGAL::Advancing_front_mesher_2<CDT, decltype(sizing)> mesher(cdt, sizing);
-    mesher.set_constraint_splitting(split);
-    mesher.set_seeds(seeds.begin(), seeds.end());
-    mesher.refine_mesh();
-  });
-  report("ours (Mavriplis, apex search and visibility)", ours, in, ours_timing,
-         std::to_string(ours.number_of_vertices() - in.points.size()) + " points");
-  for(const bool local_order : {false, true}) {
-    Frontal_cdt kept;
-    Frontal_statistics st;
-    bool first = true;
-    const Timing timing = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
-      if(split) CGAL::Advancing_front_mesh_2::split_constraints_to_size_2(cdt, sizing);
-      const Frontal_statistics this_run = frontal_delaunay(cdt, seeds, size, local_order);
-      if(first) st = this_run;
-      first = false;
+  // with `refine`, Mesh_2's refinement of the triangles below 20 degrees
+  // (refine_to_minimum_angle_2(), afmesh_2 --min-angle 20) follows the loop,
+  // timed with it
+  const std::string then_refined = ", then Mesh_2's refinement below 20 degrees";
+  for(const bool refine : {false, true}) {
+    if(refine && !refined_rows) break;
+    CDT ours;
+    std::size_t refinement_points = 0;
+    const Timing ours_timing = fastest_of(runs, in, ours, [&](CDT& cdt, const std::list<Point>& seeds) {
+      CGAL::Advancing_front_mesher_2<CDT, decltype(sizing)> mesher(cdt, sizing);
+      mesher.set_constraint_splitting(split);
+      mesher.set_seeds(seeds.begin(), seeds.end());
+      mesher.refine_mesh();
+      if(refine) refinement_points = CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted;
     });
-    report(local_order ? "experiment (Rebay), radius classes, newest first"
-                       : "experiment (Rebay), largest circumradius first",
-           kept, in, timing,
-           std::to_string(st.inserted) + " points, " + std::to_string(st.given_up) + " faces given up");
+    report(std::string("ours (Mavriplis, apex search and visibility)") + (refine ? then_refined : ""), ours, in,
+           ours_timing,
+           std::to_string(ours.number_of_vertices() - in.points.size()) + " points" +
+             (refine ? ", " + std::to_string(refinement_points) + " by the refinement" : ""));
+    for(const bool local_order : {false, true}) {
+      Frontal_cdt kept;
+      Frontal_statistics st;
+      bool first = true;
+      const Timing timing = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
+        if(split) CGAL::Advancing_front_mesh_2::split_constraints_to_size_2(cdt, sizing);
+        const Frontal_statistics this_run = frontal_delaunay(cdt, seeds, size, local_order);
+        if(first) st = this_run;
+        first = false;
+        if(refine) refinement_points = CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted;
+      });
+      report(std::string(local_order ? "experiment (Rebay), radius classes, newest first"
+                                     : "experiment (Rebay), largest circumradius first") +
+               (refine ? then_refined : ""),
+             kept, in, timing,
+             std::to_string(st.inserted) + " points, " + std::to_string(st.given_up) + " faces given up" +
+               (refine ? ", " + std::to_string(refinement_points) + " points by the refinement" : ""));
+    }
   }
 }
 
@@ -500,7 +514,8 @@ int main(int argc, char* argv[])
       // ours without its boundary discretisation, as there
       const int runs = argc > 2 ? std::atoi(argv[2]) : 3;
       const Poly_data in = afm_geometry::multi_element_airfoil(15, 64);
-      compare(in, [](double x, double y) { return 0.004 + 0.03 * std::hypot(x - 0.5, y); }, false, (std::max)(runs, 1));
+      compare(in, [](double x, double y) { return 0.004 + 0.03 * std::hypot(x - 0.5, y); }, false, (std::max)(runs, 1),
+              true);
       return 0;
     }
     if(argc < 3) {
@@ -514,7 +529,7 @@ int main(int argc, char* argv[])
       std::cerr << "H must be positive and RUNS at least 1\n";
       return 1;
     }
-    compare(in, [h](double, double) { return h; }, true, runs);
+    compare(in, [h](double, double) { return h; }, true, runs, false);
   } catch(const std::exception& e) {
     std::cerr << argv[1] << ": " << e.what() << "\n";
     return 1;
