@@ -72,7 +72,8 @@ out=doc/Advancing_front_mesh_2/benchmark/step_loop_results.md
   echo
   echo "As in graded_quality_results.md (where Gmsh's Frontal-Delaunay, raw, has its row at the same triangle count);"
   echo "ours without its boundary discretisation, as there. Then each loop again, followed by Mesh_2's Delaunay refinement"
-  echo "of the triangles below 20 degrees (refine_to_minimum_angle_2(), afmesh_2 --min-angle 20), timed with it."
+  echo "of the triangles below 20 degrees (refine_to_minimum_angle_2() with segment splitting, afmesh_2 --min-angle 20 without"
+  echo "--keep-segments), timed with it."
   echo
   "$bench" --radial-airfoil 3
   echo

@@ -20,12 +20,12 @@
 // takes the active triangles in one of two orders:
 // - largest circumradius first (a binary heap), as Rebay and Gmsh's
 //   Frontal-Delaunay take them: consecutive steps then jump along the whole
-//   front, and from 1e5 to 1e6 triangles the time per triangle grew by 80%
-//   (cache misses);
+//   front, and from 1e5 to 1e6 triangles the time per triangle grew by 53
+//   to 87% over four runs of the script (cache misses);
 // - by classes of circumradius over the accepted one a quarter octave wide,
 //   the largest class first, and within a class the newest first: the next
 //   step mostly works next to the last point, and the time per triangle
-//   grew by 38% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
+//   grew by 31 to 40% (doc/Advancing_front_mesh_2/benchmark/step_loop_results.md).
 //
 //   frontal_delaunay_experiment INPUT.poly H [RUNS]      (uniform size H)
 //   frontal_delaunay_experiment --radial-airfoil [RUNS]  (a graded field)
@@ -347,17 +347,21 @@ void compare(const Poly_data& in, const Size_function& size, bool split, int run
     if(refine && !refined_rows) break;
     CDT ours;
     std::size_t refinement_points = 0;
+    bool first_run = true;
     const Timing ours_timing = fastest_of(runs, in, ours, [&](CDT& cdt, const std::list<Point>& seeds) {
       CGAL::Advancing_front_mesher_2<CDT, decltype(sizing)> mesher(cdt, sizing);
       mesher.set_constraint_splitting(split);
       mesher.set_seeds(seeds.begin(), seeds.end());
       mesher.refine_mesh();
-      if(refine) refinement_points = CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted;
+      // (the first run's count, as its mesh is the one reported)
+      const std::size_t points = refine ? CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted : 0;
+      if(first_run) refinement_points = points;
+      first_run = false;
     });
     report(std::string("ours (Mavriplis, apex search and visibility)") + (refine ? then_refined : ""), ours, in,
            ours_timing,
-           std::to_string(ours.number_of_vertices() - in.points.size()) + " points" +
-             (refine ? ", " + std::to_string(refinement_points) + " by the refinement" : ""));
+           std::to_string(ours.number_of_vertices() - in.points.size() - refinement_points) + " points" +
+             (refine ? ", " + std::to_string(refinement_points) + " points by the refinement" : ""));
     for(const bool local_order : {false, true}) {
       Frontal_cdt kept;
       Frontal_statistics st;
@@ -365,9 +369,13 @@ void compare(const Poly_data& in, const Size_function& size, bool split, int run
       const Timing timing = fastest_of(runs, in, kept, [&](Frontal_cdt& cdt, const std::list<Point>& seeds) {
         if(split) CGAL::Advancing_front_mesh_2::split_constraints_to_size_2(cdt, sizing);
         const Frontal_statistics this_run = frontal_delaunay(cdt, seeds, size, local_order);
-        if(first) st = this_run;
+        const std::size_t points =
+          refine ? CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted : 0;
+        if(first) {
+          st = this_run;
+          refinement_points = points;
+        }
         first = false;
-        if(refine) refinement_points = CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted;
       });
       report(std::string(local_order ? "experiment (Rebay), radius classes, newest first"
                                      : "experiment (Rebay), largest circumradius first") +
@@ -482,7 +490,7 @@ void random_domains(int n)
             << " domains; it gave up " << given_up << " faces in all. Of its " << triangles << " triangles, "
             << worst.below_0_05 << " lie below a radius ratio of 0.05, " << worst.on_short_constraint
             << " of them on a constrained edge shorter than a tenth of the size; the refinement to 20 degrees "
-               "inserted "
+               "after the experiment inserted "
             << refinement_points << " points.\n";
 }
 

@@ -359,9 +359,9 @@ unit in the last place of each other). A point that fits nowhere (another
 vertex or constraint within that distance, or, for a
 `Constrained_triangulation_plus_2`, a rounded point on the convex hull,
 whose constraint hierarchy would lose the edge) is left out
-(`points_skipped`) and that piece stays longer; the triangulation is then
-the same there, but its faces may be new ones (the constraint was taken
-out and put back). In the tests' 300 random domains with `Epick`, 9,736 cut
+(`points_skipped`) and that piece stays longer; the constraint may have
+been taken out and put back, so the faces around it may be new ones (and,
+where points are cocircular, differently triangulated). In the tests' 300 random domains with `Epick`, 9,736 cut
 points were inserted, 8,913 of them rounded, none left out.
 
 The faces the splits make are new faces of the triangulation, and so may
