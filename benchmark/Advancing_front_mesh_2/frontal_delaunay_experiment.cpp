@@ -354,7 +354,8 @@ void compare(const Poly_data& in, const Size_function& size, bool split, int run
       mesher.set_seeds(seeds.begin(), seeds.end());
       mesher.refine_mesh();
       // (the first run's count, as its mesh is the one reported)
-      const std::size_t points = refine ? CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted : 0;
+      const std::size_t points =
+        refine ? CGAL::Advancing_front_mesh_2::refine_to_minimum_angle_2(cdt, 20).points_inserted : 0;
       if(first_run) refinement_points = points;
       first_run = false;
     });

@@ -173,8 +173,8 @@ public:
   split to the size field (`set_constraint_splitting()` is ignored: the
   faces a split makes could not be marked again); split them beforehand
   with `split_constraints_to_size_2()` and mark the domain afterwards (the
-  split may replace faces even where it inserts no point). `set_seeds()` and `clear_seeds()`
-  turn it off.
+  split may replace faces even where it inserts no point). `set_seeds()`
+  and `clear_seeds()` turn it off.
   */
   void use_domain_marks()
   {

@@ -328,10 +328,11 @@ AFM_TEST_CASE(test_boundary_near_coincident_segments)
 
 // A thin triangle on the fine grid (64,000 units long, its third vertex
 // about 3 units in the last place from its long edge, within the cuts'
-// clearance of 64) whose cuts fit nowhere: each is tried by taking its constraint out and putting it
-// back, which makes new faces even when the cut is left out (a fuzzer's
-// find: the mesher then lost the domain's marks and meshed nothing). The
-// mesher marks the domain again after any splitting.
+// clearance of 64) whose cuts fit nowhere: each is tried by taking its
+// constraint out and putting it back, which makes new faces even when the
+// cut is left out (a fuzzer's find: the mesher then lost the domain's marks
+// and meshed nothing). The mesher marks the domain again after any
+// splitting.
 AFM_TEST_CASE(test_boundary_left_out_cuts_keep_the_domain)
 {
   afm_test::Poly_data in;

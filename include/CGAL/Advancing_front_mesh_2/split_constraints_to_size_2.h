@@ -361,8 +361,9 @@ vertex or constraint within that distance, or, for a
 whose constraint hierarchy would lose the edge) is left out
 (`points_skipped`) and that piece stays longer; the constraint may have
 been taken out and put back, so the faces around it may be new ones (and,
-where points are cocircular, differently triangulated). In the tests' 300 random domains with `Epick`, 9,736 cut
-points were inserted, 8,913 of them rounded, none left out.
+where points are cocircular, differently triangulated). In the tests' 300
+random domains with `Epick`, 9,736 cut points were inserted, 8,913 of them
+rounded, none left out.
 
 The faces the splits make are new faces of the triangulation, and so may
 be the faces at a cut left out: Mesh_2's in-domain marks are not kept, so
