@@ -19,9 +19,9 @@ report_stage_times() { printf '=== time per stage ===\n%s' "$stage_times"; }
 trap report_stage_times EXIT
 
 # GDAL (libgdal-dev, and gdal-bin's ogr2ogr to make test inputs) is optional for users; the tests install it
-# so that the OGR inputs are tested (scripts/demo.sh does without it)
+# so that the OGR inputs are tested (scripts/demo.sh does without it); OpenMPI likewise, for afmesh_2_mpi
 bash scripts/install-deps.sh clang libclang-rt-14-dev python3-meshio python3-gmsh pybind11-dev python3-numpy \
-  python3-pytest libgdal-dev gdal-bin
+  python3-pytest libgdal-dev gdal-bin libopenmpi-dev openmpi-bin
 end_stage "installing what is missing"
 jobs=${AFM_JOBS:-2}
 # Line tables only (-g1) instead of full debug information: the sanitizers'

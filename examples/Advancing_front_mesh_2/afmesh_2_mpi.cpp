@@ -1,0 +1,266 @@
+// afmesh_2_mpi: afmesh_2 on MPI ranks, for meshes larger than one machine.
+//
+//   mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]
+//          -o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output  [--stats]
+//
+// Every rank reads INPUT and makes the size field, the boundary
+// discretisation and the cuts of the decomposition itself (afmesh_2_mpi/
+// parts.h): one part per rank, strips balanced by the triangle count the
+// size field predicts, their interfaces discretised to the size field. Each
+// rank meshes its part with the frontal mesher; the interfaces between the
+// ranks are then released and the mesh made constrained Delaunay across
+// them by merging a band of triangles on both sides (afmesh_2_mpi/bands.h).
+// OUT.pvtu is a collection (ParaView, meshio) of one piece per rank,
+// OUT_<rank>.vtu, with the global vertex numbers (point data GlobalNodeId)
+// and the rank of each triangle (cell data partition); --merge writes one
+// file instead (rank 0 writes it as the ranks send their shares).
+//
+// The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
+// MPI: --stream, checkpoints and --resume, --smooth, --min-angle,
+// --keep-segments, --time-limit, --max-steps, --threads, --kernel other than
+// epick, --histogram, --report, the markers and regions in the outputs, and
+// the formats other than .pvtu, .off and .vtu: they are refused (exit 2).
+//
+// Exit codes as afmesh_2's: 0 success; 1 invalid input; 2 bad usage; 3 an
+// output that could not be written, or an internal error.
+#include "afmesh_2_mpi/channel.h"
+#include "afmesh_2_mpi/merged.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <sys/resource.h>
+#include <vector>
+
+namespace afmesh_2_mpi {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+
+struct Mpi_options
+{
+  afmesh_2::Options opt;
+  std::vector<std::string> outputs;
+  bool merge = false;
+};
+
+inline bool ends_with(const std::string& s, const std::string& tail) { return afmesh_2::ends_with(s, tail); }
+
+// The tool's own options (-o, --merge) taken out, the others read by
+// afmesh_2's parser; throws afmesh_2::Usage_error.
+inline Mpi_options parse(const std::vector<std::string>& args)
+{
+  Mpi_options m;
+  std::vector<std::string> rest;
+  bool no_output = false, threads = false;
+  for(std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if(a == "--help" || a == "-h") {
+      std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
+                   "                    (-o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output) [--stats]\n\n"
+                   "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
+                   "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
+                   "one file. The input and size options are afmesh_2's (afmesh_2 --help).\n";
+      std::exit(0);
+    }
+    if(a == "--merge") {
+      m.merge = true;
+    } else if(a == "-o" || a == "--output") {
+      if(i + 1 == args.size()) throw afmesh_2::Usage_error("the option '" + a + "' requires an argument");
+      m.outputs.push_back(args[++i]);
+    } else if(a.compare(0, 9, "--output=") == 0) {
+      m.outputs.push_back(a.substr(9));
+    } else {
+      no_output = no_output || a == "--no-output";
+      threads = threads || a == "--threads" || a.compare(0, 10, "--threads=") == 0;
+      rest.push_back(a);
+    }
+  }
+  if(no_output && !m.outputs.empty()) throw afmesh_2::Usage_error("--no-output cannot be combined with -o");
+  if(!no_output) rest.push_back("--no-output");
+  m.opt = afmesh_2::parse(rest);
+  const afmesh_2::Options& o = m.opt;
+  const char* refused = o.stream                   ? "--stream"
+                        : o.checkpoint_every > 0   ? "--checkpoint-every"
+                        : !o.resume.empty()        ? "--resume"
+                        : o.smooth > 0             ? "--smooth"
+                        : o.min_angle != 0         ? "--min-angle"
+                        : o.keep_segments          ? "--keep-segments"
+                        : o.time_limit > 0         ? "--time-limit"
+                        : o.max_steps > 0          ? "--max-steps"
+                        : threads                  ? "--threads (one thread per rank: start more ranks)"
+                        : o.kernel != "epick"      ? "--kernel other than epick"
+                        : !o.histogram.empty()     ? "--histogram"
+                        : o.report                 ? "--report"
+                                                   : nullptr;
+  if(refused != nullptr) throw afmesh_2::Usage_error(std::string("afmesh_2_mpi does not support ") + refused + " yet");
+  if(m.outputs.empty() && !no_output)
+    throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
+  for(const std::string& out : m.outputs) {
+    if(m.merge && !ends_with(out, ".off") && !ends_with(out, ".vtu"))
+      throw afmesh_2::Usage_error("--merge writes .off or .vtu, not '" + out + "'");
+    if(!m.merge && !ends_with(out, ".pvtu"))
+      throw afmesh_2::Usage_error("without --merge the output is a collection of pieces (.pvtu), not '" + out + "'");
+  }
+  return m;
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The file this rank writes for `out`: its piece, or (rank 0) the merged
+// file; empty when it writes none.
+inline std::string file_of(const Mpi_options& m, const std::string& out, int rank)
+{
+  if(m.merge) return rank == 0 ? out : std::string();
+  return piece_name(out, rank);
+}
+
+// An output that cannot be written must show before the meshing, on every
+// rank at once: each rank tries a scratch file beside its own, and rank 0
+// names the first that failed. Returns false then.
+inline bool outputs_writable(const Mpi_options& m, int rank, int ranks)
+{
+  for(const std::string& out : m.outputs) {
+    const std::string mine = file_of(m, out, rank);
+    bool ok = true;
+    if(!mine.empty()) {
+      const std::string scratch = mine + ".tmp";
+      ok = bool(std::ofstream(scratch.c_str(), std::ios::out | std::ios::binary | std::ios::app));
+      std::remove(scratch.c_str());
+    }
+    const std::vector<char> all = gather_to_root<char>(ok ? 1 : 0, ranks);
+    bool every = true;
+    if(rank == 0)
+      for(int r = 0; r < ranks && every; ++r)
+        if(!all[std::size_t(r)]) {
+          std::cerr << "afmesh_2_mpi: error: cannot write " << file_of(m, out, r) << "\n";
+          every = false;
+        }
+    if(!all_ranks(rank != 0 || every)) return false;
+  }
+  return true;
+}
+
+inline int run(const Mpi_options& m, int rank, int ranks)
+{
+  const auto t_start = std::chrono::steady_clock::now();
+  if(!outputs_writable(m, rank, ranks)) return 3;
+  afmesh_2::Input<K> in;
+  afmesh_2::load_input(m.opt, in);
+  Decomposition<K> d = decompose<K>(in, ranks);
+  const double t_decomposition = seconds_since(t_start);
+
+  const auto t_mesh = std::chrono::steady_clock::now();
+  CDT<K> part_cdt;
+  AFM::Statistics st;
+  AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
+  // one part: afmesh_2's serial mesher, in the input's triangulation
+  CDT<K>& meshed = d.parts == 1 ? in.cdt : part_cdt;
+  if(d.parts == 1 && rank == 0) rc = mesh_whole<K>(m.opt, in, st);
+  else if(d.parts > 1 && std::size_t(rank) < d.parts) rc = mesh_part<K>(m.opt, in, d, std::size_t(rank), part_cdt, st);
+  const double t_meshing = seconds_since(t_mesh);
+  if(sum_over_ranks(st.number_of_faces) == 0)
+    throw afmesh_2::Input_error(m.opt.input +
+                                ": nothing to mesh: no bounded region is left once the holes are removed");
+
+  const auto t_merge = std::chrono::steady_clock::now();
+  Interface_work<K> w;
+  merge_interfaces<K>(in, d, rank, meshed, w);
+  const Rank_mesh mesh = rank_mesh<K>(meshed, w, rank, std::size_t(rank) < d.parts);
+  const double t_interfaces = seconds_since(t_merge);
+
+  const auto t_write = std::chrono::steady_clock::now();
+  for(const std::string& out : m.outputs) {
+    if(m.merge) write_merged(out, mesh, rank, ranks, !m.opt.vtu_ascii);
+    else write_piece(out, mesh, rank, ranks, !m.opt.vtu_ascii);
+  }
+  const double t_writing = seconds_since(t_write);
+
+  // the figures of every rank, printed by rank 0
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  struct Figures
+  {
+    double meshing, interfaces, writing, peak_memory_mb;
+    std::uint64_t triangles, owned_vertices, band_triangles, flips, seam_vertices, widenings;
+    int code;
+  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, mesh.triangles.size(),
+         mesh.owned_count, w.merge.band_triangles, w.merge.flips, w.merge.seam_vertices, w.widenings, int(rc)};
+  const std::vector<Figures> all = gather_to_root(mine, ranks);
+  if(rank == 0 && m.opt.stats) {
+    nlohmann::ordered_json j;
+    j["input"] = m.opt.input;
+    j["ranks"] = ranks;
+    j["parts"] = d.parts;
+    if(!d.one_part_reason.empty()) j["one_part_reason"] = d.one_part_reason;
+    j["axis"] = d.plan.axis;
+    std::vector<double> cuts;
+    for(const auto& c : d.plan.cuts) cuts.push_back(c.position);
+    j["cuts"] = cuts;
+    j["predicted_triangles"] = d.plan.estimated;
+    std::uint64_t triangles = 0, vertices = 0;
+    nlohmann::ordered_json per_rank = nlohmann::ordered_json::array();
+    for(const Figures& f : all) {
+      triangles += f.triangles;
+      vertices += f.owned_vertices;
+      per_rank.push_back({{"triangles", f.triangles}, {"owned_vertices", f.owned_vertices},
+                          {"meshing_time", f.meshing}, {"interface_time", f.interfaces},
+                          {"writing_time", f.writing}, {"band_triangles", f.band_triangles},
+                          {"interface_flips", f.flips}, {"seam_vertices", f.seam_vertices},
+                          {"band_widenings", f.widenings}, {"peak_memory_mb", f.peak_memory_mb},
+                          {"return_code", f.code}});
+    }
+    j["number_of_faces"] = triangles;
+    j["number_of_vertices"] = vertices;
+    j["decomposition_time"] = t_decomposition;
+    j["total_time"] = seconds_since(t_start);
+    j["per_rank"] = per_rank;
+    std::cout << j.dump() << std::endl;
+  }
+  return 0;
+}
+
+} // namespace afmesh_2_mpi
+
+int main(int argc, char* argv[])
+{
+  using namespace afmesh_2_mpi;
+  Mpi_session mpi(argc, argv);
+  auto say = [&](const std::string& what) {
+    if(mpi.rank == 0) std::cerr << "afmesh_2_mpi: " << what << "\n";
+  };
+  Mpi_options m;
+  try {
+    m = parse(std::vector<std::string>(argv + 1, argv + argc));
+  } catch(const afmesh_2::Usage_error& e) {
+    say(std::string(e.what()) + "\nTry 'afmesh_2_mpi --help'.");
+    return 2;
+  } catch(const afmesh_2::Input_error& e) {
+    say(std::string("error: ") + e.what());
+    return 1;
+  }
+  // every rank reads the input and meshes in the same way, so invalid input
+  // stops them all at the same place; anything else may stop one rank only,
+  // and MPI_Abort then ends them all
+  try {
+    return run(m, mpi.rank, mpi.ranks);
+  } catch(const afmesh_2::Input_error& e) {
+    say(std::string("error: ") + e.what());
+    return 1;
+  } catch(const std::invalid_argument& e) {
+    say("error: " + m.opt.input + ": " + e.what());
+    return 1;
+  } catch(const std::exception& e) {
+    std::cerr << "afmesh_2_mpi: rank " << mpi.rank << ": error: " << e.what() << "\n";
+    MPI_Abort(MPI_COMM_WORLD, 3);
+    return 3;
+  }
+}

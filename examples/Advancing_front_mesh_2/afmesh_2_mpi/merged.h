@@ -1,0 +1,107 @@
+// afmesh_2_mpi --merge: the whole mesh in one file, written by rank 0 as
+// the other ranks send their shares, one rank after another (rank 0 holds
+// one share at a time): first the owned points of each rank in the order of
+// their numbers, then each rank's triangles by those numbers.
+#ifndef AFMESH_2_MPI_MERGED_H
+#define AFMESH_2_MPI_MERGED_H
+
+#include "pieces.h"
+
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace afmesh_2_mpi {
+
+inline std::vector<double> owned_points(const Rank_mesh& m)
+{
+  std::vector<double> xy;
+  xy.reserve(2 * m.owned_count);
+  for(std::size_t i = 0; i < m.points.size(); ++i)
+    if(m.owned[i]) {
+      xy.push_back(m.points[i][0]);
+      xy.push_back(m.points[i][1]);
+    }
+  return xy;
+}
+
+inline std::vector<std::uint64_t> numbered_triangles(const Rank_mesh& m)
+{
+  std::vector<std::uint64_t> t;
+  t.reserve(3 * m.triangles.size());
+  for(const auto& tri : m.triangles)
+    for(std::uint64_t v : tri) t.push_back(m.global_id[v]);
+  return t;
+}
+
+// Rank 0 writes `out` (.off or .vtu); the others send it their shares.
+// Throws std::runtime_error (rank 0) when the file cannot be written.
+inline void write_merged(const std::string& out, const Rank_mesh& m, int rank, int ranks, bool binary)
+{
+  const std::vector<std::uint64_t> triangles_per_rank = gather_to_root<std::uint64_t>(m.triangles.size(), ranks);
+  const std::uint64_t nv = sum_over_ranks(m.owned_count);
+  if(rank != 0) {
+    send_vector(owned_points(m), 0, MERGED_POINTS);
+    send_vector(numbered_triangles(m), 0, MERGED_TRIANGLES);
+    return;
+  }
+  auto points_of = [&](int r) { return r == 0 ? owned_points(m) : receive_vector<double>(r, MERGED_POINTS); };
+  auto triangles_of = [&](int r) {
+    return r == 0 ? numbered_triangles(m) : receive_vector<std::uint64_t>(r, MERGED_TRIANGLES);
+  };
+  std::ofstream os(out, std::ios::binary);
+  os << std::setprecision(17);
+  if(out.size() >= 4 && out.compare(out.size() - 4, 4, ".off") == 0) {
+    std::uint64_t nt = 0;
+    for(std::uint64_t n : triangles_per_rank) nt += n;
+    os << "OFF\n" << nv << ' ' << nt << " 0\n";
+    for(int r = 0; r < ranks; ++r) {
+      const std::vector<double> xy = points_of(r);
+      for(std::size_t i = 0; i + 1 < xy.size(); i += 2) os << xy[i] << ' ' << xy[i + 1] << " 0\n";
+    }
+    for(int r = 0; r < ranks; ++r) {
+      const std::vector<std::uint64_t> t = triangles_of(r);
+      for(std::size_t i = 0; i + 2 < t.size(); i += 3) os << "3 " << t[i] << ' ' << t[i + 1] << ' ' << t[i + 2] << '\n';
+    }
+  } else {
+    write_vtu(os, nv, triangles_per_rank, 0, binary,
+              [&](std::string& raw) {
+                for(int r = 0; r < ranks; ++r) {
+                  const std::vector<double> xy = points_of(r);
+                  for(std::size_t i = 0; i + 1 < xy.size(); i += 2) {
+                    if(binary) {
+                      vtu::vtu_append_raw(raw, xy[i]);
+                      vtu::vtu_append_raw(raw, xy[i + 1]);
+                      vtu::vtu_append_raw(raw, 0.);
+                    } else {
+                      os << xy[i] << ' ' << xy[i + 1] << " 0\n";
+                    }
+                  }
+                  os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
+                  raw.clear();
+                }
+              },
+              [&](std::string& raw) {
+                for(int r = 0; r < ranks; ++r) {
+                  const std::vector<std::uint64_t> t = triangles_of(r);
+                  for(std::size_t i = 0; i + 2 < t.size(); i += 3) {
+                    if(binary)
+                      for(int k = 0; k < 3; ++k) vtu::vtu_append_raw(raw, std::int64_t(t[i + k]));
+                    else
+                      os << t[i] << ' ' << t[i + 1] << ' ' << t[i + 2] << '\n';
+                  }
+                  os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
+                  raw.clear();
+                }
+              },
+              nullptr);
+  }
+  os.close();
+  if(os.fail()) throw std::runtime_error("cannot write " + out);
+}
+
+} // namespace afmesh_2_mpi
+
+#endif // AFMESH_2_MPI_MERGED_H

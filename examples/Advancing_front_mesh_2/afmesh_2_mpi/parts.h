@@ -1,0 +1,129 @@
+// afmesh_2_mpi: the domain cut into parts, the same way on every rank, and
+// this rank's part meshed.
+//
+// Every rank reads the input and makes the size field, the boundary
+// discretisation and the cuts itself: they are deterministic and cost a
+// small fraction of the meshing, and no rank waits for another before it
+// meshes. The cuts are those of mesh_in_parallel_2() (strips across the
+// longer axis, balanced by the triangle count the size field predicts),
+// one part per rank; a domain too small for as many parts of 2,000
+// triangles has fewer parts, and the ranks beyond them have nothing to
+// mesh.
+#ifndef AFMESH_2_MPI_PARTS_H
+#define AFMESH_2_MPI_PARTS_H
+
+#include "../afmesh_2/meshing.h"
+
+#include <CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h>
+
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace afmesh_2_mpi {
+
+namespace AFM = CGAL::Advancing_front_mesh_2;
+
+template <class K>
+using CDT = typename afmesh_2::Types<K>::CDT;
+
+// The decomposition, the same on every rank.
+template <class K>
+struct Decomposition
+{
+  typedef typename K::Point_2 Point;
+  AFM::internal::Strip_plan plan;
+  std::size_t parts = 1;
+  std::string one_part_reason; // why the domain is one part, when it is
+  std::vector<std::vector<std::vector<Point> > > chains_of_cut;
+  std::vector<std::vector<std::pair<Point, Point> > > constraints;
+  std::vector<std::vector<Point> > free_points;
+  // the points of each cut's interface chains, and the largest size there
+  std::vector<std::set<std::pair<double, double> > > interface_points;
+  std::vector<double> interface_size;
+  AFM::Parallel_mesh_statistics cut_statistics;
+};
+
+inline std::pair<double, double> key_of(double x, double y) { return std::make_pair(x, y); }
+
+template <class Point>
+std::pair<double, double> key_of(const Point& p)
+{
+  return key_of(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+}
+
+// Plans `ranks` parts of the domain of `in` and makes the cuts in in.cdt
+// (the markers follow the segments they split).
+template <class K>
+Decomposition<K> decompose(afmesh_2::Input<K>& in, int ranks)
+{
+  typedef CDT<K> Cdt;
+  typedef CGAL::Delaunay_mesher_2<Cdt, CGAL::Delaunay_mesh_criteria_2<Cdt> > Mesh_2_mesher;
+  Decomposition<K> d;
+  const std::vector<typename K::Point_2> seeds(in.seeds.begin(), in.seeds.end());
+  // holes are given by seeds (mark = false), as afmesh_2 does
+  Mesh_2_mesher::mark_facets(in.cdt, seeds.begin(), seeds.end(), false);
+  auto on_split = [&in](typename Cdt::Vertex_handle a, typename Cdt::Vertex_handle b,
+                        typename Cdt::Vertex_handle v) { in.tags.split_constraint(a, b, v); };
+  if(ranks > 1 && in.cdt.dimension() == 2) d.plan = AFM::internal::plan_strips(in.cdt, in.sizing, std::size_t(ranks));
+  if(!d.plan.cuts.empty()) {
+    try {
+      d.chains_of_cut = AFM::internal::make_cuts(in.cdt, in.sizing, d.plan, seeds, false, on_split, d.cut_statistics);
+    } catch(const std::runtime_error& e) {
+      d.one_part_reason = std::string("a cut could not be made: ") + e.what();
+      d.plan.cuts.clear();
+      d.chains_of_cut.clear();
+    }
+    Mesh_2_mesher::mark_facets(in.cdt, seeds.begin(), seeds.end(), false);
+  } else if(ranks > 1) {
+    d.one_part_reason = "the domain is too small for two parts";
+  }
+  d.parts = d.plan.cuts.size() + 1;
+  AFM::internal::part_inputs(in.cdt, d.plan, d.constraints, d.free_points);
+  for(const auto& chains : d.chains_of_cut) {
+    std::set<std::pair<double, double> > points;
+    double size = 0;
+    for(const auto& chain : chains)
+      for(const auto& p : chain) {
+        points.insert(key_of(p));
+        size = (std::max)(size, CGAL::to_double(in.sizing(p)));
+      }
+    d.interface_points.push_back(std::move(points));
+    d.interface_size.push_back(size);
+  }
+  return d;
+}
+
+// Part `part` built in `part_cdt` and meshed; returns the mesher's code.
+template <class K>
+AFM::Mesh_return_code mesh_part(const afmesh_2::Options& opt, const afmesh_2::Input<K>& in,
+                                const Decomposition<K>& d, std::size_t part, CDT<K>& part_cdt,
+                                AFM::Statistics& st)
+{
+  AFM::internal::build_part(in.cdt, d.plan, part, d.constraints[part], d.chains_of_cut, d.free_points[part],
+                            part_cdt);
+  CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> > mesher(part_cdt, in.sizing);
+  mesher.use_domain_marks();
+  mesher.set_pocket_priority(!opt.no_pocket_priority);
+  const AFM::Mesh_return_code rc = mesher.refine_mesh();
+  st = mesher.statistics();
+  return rc;
+}
+
+// The domain in one part: meshed as afmesh_2 does on one thread.
+template <class K>
+AFM::Mesh_return_code mesh_whole(const afmesh_2::Options& opt, afmesh_2::Input<K>& in, AFM::Statistics& st)
+{
+  CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> > mesher(in.cdt, in.sizing);
+  mesher.set_seeds(in.seeds.begin(), in.seeds.end());
+  mesher.set_constraint_splitting(false); // load_input() did it
+  mesher.set_pocket_priority(!opt.no_pocket_priority);
+  const AFM::Mesh_return_code rc = mesher.refine_mesh();
+  st = mesher.statistics();
+  return rc;
+}
+
+} // namespace afmesh_2_mpi
+
+#endif // AFMESH_2_MPI_PARTS_H

@@ -1,0 +1,241 @@
+// afmesh_2_mpi: each rank's share of the mesh, its vertices numbered
+// across the ranks, and the files: one .vtu piece per rank with a .pvtu
+// collection, or (--merge) one file written by rank 0.
+//
+// A rank's share is its part's triangles, less the band it sent to the rank
+// below, plus the merged band of the cut above it. A vertex is owned by the
+// lowest rank whose share holds it: a rank's vertices are its own but for
+// those of the band it sent down, which the rank below holds too. Owned
+// vertices are numbered across the ranks by an exclusive scan of their
+// counts, in the order each rank met them; the rank below tells the rank
+// above the numbers of the band's points.
+#ifndef AFMESH_2_MPI_PIECES_H
+#define AFMESH_2_MPI_PIECES_H
+
+#include "bands.h"
+
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Vtu_layout.h>
+#include <CGAL/Handle_hash_function.h>
+
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+namespace afmesh_2_mpi {
+
+struct Rank_mesh
+{
+  std::vector<std::array<double, 2> > points;
+  std::vector<std::array<std::uint64_t, 3> > triangles; // by local point index
+  std::vector<char> owned;
+  std::vector<std::uint64_t> global_id;
+  std::uint64_t owned_count = 0, first_id = 0;
+  std::map<std::pair<double, double>, std::uint64_t> index; // point -> local index
+
+  std::uint64_t add_point(const std::pair<double, double>& p)
+  {
+    const auto inserted = index.emplace(p, points.size());
+    if(inserted.second) points.push_back({{p.first, p.second}});
+    return inserted.first->second;
+  }
+  template <class Face>
+  void add_triangle(const Face& f)
+  {
+    std::array<std::uint64_t, 3> t;
+    for(int k = 0; k < 3; ++k) t[k] = add_point(key_of(f->vertex(k)->point()));
+    triangles.push_back(t);
+  }
+};
+
+// This rank's share, with every vertex's number.
+template <class K>
+Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank, bool has_part)
+{
+  typedef typename CDT<K>::Face_handle Face_handle;
+  Rank_mesh m;
+  std::unordered_set<Face_handle, CGAL::Handle_hash_function> moved;
+  if(w.has_lower) moved.insert(w.sent.faces.begin(), w.sent.faces.end());
+  if(w.has_upper) moved.insert(w.kept_band.faces.begin(), w.kept_band.faces.end());
+  if(has_part && part_cdt.dimension() == 2)
+    for(auto f = part_cdt.finite_faces_begin(); f != part_cdt.finite_faces_end(); ++f)
+      if(f->is_in_domain() && moved.count(f) == 0) m.add_triangle(f);
+  if(w.has_upper)
+    for(auto f = w.merged.finite_faces_begin(); f != w.merged.finite_faces_end(); ++f)
+      if(f->is_in_domain()) m.add_triangle(f);
+  m.owned.assign(m.points.size(), 1);
+  if(w.has_lower)
+    for(const auto& p : w.sent.soup.points) {
+      const auto it = m.index.find(key_of(p));
+      if(it != m.index.end()) m.owned[it->second] = 0;
+    }
+  for(char o : m.owned) m.owned_count += o != 0;
+  m.first_id = exclusive_scan(m.owned_count, rank);
+  const std::uint64_t unknown = ~std::uint64_t(0);
+  m.global_id.assign(m.points.size(), unknown);
+  std::uint64_t next = m.first_id;
+  for(std::size_t i = 0; i < m.points.size(); ++i)
+    if(m.owned[i]) m.global_id[i] = next++;
+  // the numbers of the band points: down from the rank that owns them
+  if(w.has_upper) {
+    std::vector<std::uint64_t> ids;
+    for(const auto& v : w.upper_vertices) ids.push_back(m.global_id.at(m.index.at(key_of(v->point()))));
+    send_vector(ids, rank + 1, BAND_IDS);
+  }
+  if(w.has_lower) {
+    const std::vector<std::uint64_t> ids = receive_vector<std::uint64_t>(rank - 1, BAND_IDS);
+    if(ids.size() != w.sent.soup.points.size()) throw std::logic_error("the band's numbers do not match its points");
+    for(std::size_t k = 0; k < ids.size(); ++k) {
+      const auto it = m.index.find(key_of(w.sent.soup.points[k]));
+      if(it != m.index.end()) m.global_id[it->second] = ids[k];
+    }
+  }
+  for(std::uint64_t id : m.global_id)
+    if(id == unknown) throw std::logic_error("a vertex of the rank's share has no number");
+  return m;
+}
+
+struct Stream_out
+{
+  std::ostream& os;
+  void put(const char* s, std::size_t n) { os.write(s, static_cast<std::streamsize>(n)); }
+};
+
+namespace vtu = CGAL::Advancing_front_mesh_2::IO::internal;
+
+// The arrays of a .vtu of `nv` points and the triangles counted per rank in
+// `triangles_per_rank`: `points(raw)` and `connectivity(raw)` append the
+// values (binary) or print them (ASCII); the partition of each triangle is
+// its rank, counted from `first_rank`.
+template <class Points, class Connectivity>
+void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64_t>& triangles_per_rank,
+               int first_rank, bool binary, const Points& points, const Connectivity& connectivity,
+               const std::vector<std::uint64_t>* global_ids)
+{
+  std::uint64_t nt = 0;
+  for(std::uint64_t n : triangles_per_rank) nt += n;
+  std::string raw;
+  auto flush = [&] {
+    os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
+    raw.clear();
+  };
+  std::vector<vtu::Vtu_array> arrays;
+  arrays.push_back({vtu::Vtu_section::POINTS, "type=\"Float64\" NumberOfComponents=\"3\"", 24 * nv, [&] {
+    points(raw);
+    flush();
+  }});
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"Int64\" Name=\"connectivity\"", 24 * nt, [&] {
+    connectivity(raw);
+    flush();
+  }});
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"Int64\" Name=\"offsets\"", 8 * nt, [&] {
+    for(std::uint64_t t = 1; t <= nt; ++t) {
+      if(binary) vtu::vtu_append_raw(raw, std::int64_t(3 * t));
+      else os << 3 * t << '\n';
+      if(raw.size() > (1u << 20)) flush();
+    }
+    flush();
+  }});
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"UInt8\" Name=\"types\"", nt, [&] {
+    for(std::uint64_t t = 0; t < nt; ++t) {
+      if(binary) raw.push_back(char(5));
+      else os << "5\n";
+      if(raw.size() > (1u << 20)) flush();
+    }
+    flush();
+  }});
+  if(global_ids != nullptr)
+    arrays.push_back({vtu::Vtu_section::POINT_DATA, "type=\"Int64\" Name=\"GlobalNodeId\"", 8 * nv, [&] {
+      for(std::uint64_t id : *global_ids) {
+        if(binary) vtu::vtu_append_raw(raw, std::int64_t(id));
+        else os << id << '\n';
+      }
+      flush();
+    }});
+  arrays.push_back({vtu::Vtu_section::CELL_DATA, "type=\"Int32\" Name=\"partition\"", 4 * nt, [&] {
+    for(std::size_t r = 0; r < triangles_per_rank.size(); ++r)
+      for(std::uint64_t t = 0; t < triangles_per_rank[r]; ++t) {
+        if(binary) vtu::vtu_append_raw(raw, std::int32_t(first_rank + int(r)));
+        else os << first_rank + int(r) << '\n';
+        if(raw.size() > (1u << 20)) flush();
+      }
+    flush();
+  }});
+  Stream_out out{os};
+  vtu::vtu_write(out, nv, nt, arrays, binary);
+}
+
+inline void append_points(std::ostream& os, std::string& raw, bool binary,
+                          const std::vector<std::array<double, 2> >& points, const std::vector<char>* only)
+{
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    if(only != nullptr && !(*only)[i]) continue;
+    if(binary) {
+      vtu::vtu_append_raw(raw, points[i][0]);
+      vtu::vtu_append_raw(raw, points[i][1]);
+      vtu::vtu_append_raw(raw, 0.);
+    } else {
+      os << points[i][0] << ' ' << points[i][1] << " 0\n";
+    }
+  }
+}
+
+inline std::string piece_name(const std::string& pvtu, int rank)
+{
+  return pvtu.substr(0, pvtu.size() - 5) + "_" + std::to_string(rank) + ".vtu";
+}
+
+inline std::string base_name(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// This rank's piece of OUT.pvtu (OUT_<rank>.vtu), and the collection file
+// (rank 0). A rank with no triangles writes no piece, and the collection
+// names only the others (meshio cannot read a piece without cells). Throws
+// std::runtime_error when a file cannot be written.
+inline void write_piece(const std::string& pvtu, const Rank_mesh& m, int rank, int ranks, bool binary)
+{
+  const std::string name = piece_name(pvtu, rank);
+  const std::vector<std::uint64_t> triangles_per_rank = gather_to_root<std::uint64_t>(m.triangles.size(), ranks);
+  if(!m.triangles.empty()) {
+    std::ofstream os(name, std::ios::binary);
+    os << std::setprecision(17);
+    write_vtu(os, m.points.size(), {m.triangles.size()}, rank, binary,
+              [&](std::string& raw) { append_points(os, raw, binary, m.points, nullptr); },
+              [&](std::string& raw) {
+                for(const auto& t : m.triangles) {
+                  if(binary)
+                    for(std::uint64_t v : t) vtu::vtu_append_raw(raw, std::int64_t(v));
+                  else
+                    os << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+                }
+              },
+              &m.global_id);
+    os.close();
+    if(os.fail()) throw std::runtime_error("cannot write " + name);
+  }
+  if(rank != 0) return;
+  std::ofstream os(pvtu);
+  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\""
+     << (vtu::vtu_host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
+     << "<PUnstructuredGrid GhostLevel=\"0\">\n"
+     << "<PPointData><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/></PPointData>\n"
+     << "<PCellData><PDataArray type=\"Int32\" Name=\"partition\"/></PCellData>\n"
+     << "<PPoints><PDataArray type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
+  for(int r = 0; r < ranks; ++r)
+    if(triangles_per_rank[std::size_t(r)] > 0) os << "<Piece Source=\"" << base_name(piece_name(pvtu, r)) << "\"/>\n";
+  os << "</PUnstructuredGrid>\n</VTKFile>\n";
+  os.close();
+  if(os.fail()) throw std::runtime_error("cannot write " + pvtu);
+}
+
+} // namespace afmesh_2_mpi
+
+#endif // AFMESH_2_MPI_PIECES_H
