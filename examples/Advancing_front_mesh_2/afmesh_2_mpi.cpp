@@ -190,10 +190,11 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   struct Figures
   {
     double meshing, interfaces, writing, peak_memory_mb;
-    std::uint64_t triangles, owned_vertices, band_triangles, flips, seam_vertices, widenings;
+    std::uint64_t triangles, owned_vertices, band_triangles, flips, seam_vertices, widenings, band_bytes_sent;
     int code;
   } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, mesh.triangles.size(),
-         mesh.owned_count, w.merge.band_triangles, w.merge.flips, w.merge.seam_vertices, w.widenings, int(rc)};
+         mesh.owned_count, w.merge.band_triangles, w.merge.flips, w.merge.seam_vertices, w.widenings,
+         w.bytes_sent, int(rc)};
   const std::vector<Figures> all = gather_to_root(mine, ranks);
   if(rank == 0 && m.opt.stats) {
     nlohmann::ordered_json j;
@@ -215,7 +216,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
                           {"meshing_time", f.meshing}, {"interface_time", f.interfaces},
                           {"writing_time", f.writing}, {"band_triangles", f.band_triangles},
                           {"interface_flips", f.flips}, {"seam_vertices", f.seam_vertices},
-                          {"band_widenings", f.widenings}, {"peak_memory_mb", f.peak_memory_mb},
+                          {"band_widenings", f.widenings}, {"band_bytes_sent", f.band_bytes_sent},
+                          {"peak_memory_mb", f.peak_memory_mb},
                           {"return_code", f.code}});
     }
     j["number_of_faces"] = triangles;

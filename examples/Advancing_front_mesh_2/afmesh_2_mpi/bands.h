@@ -71,8 +71,9 @@ struct Soup_message
   std::vector<unsigned char> constrained;
 };
 
+// Sends `soup` to rank `to`; returns the bytes sent.
 template <class Point>
-void send_soup(const AFM::internal::Triangle_soup_2<Point>& soup, int to)
+std::size_t send_soup(const AFM::internal::Triangle_soup_2<Point>& soup, int to)
 {
   Soup_message m;
   for(const Point& p : soup.points) {
@@ -83,6 +84,7 @@ void send_soup(const AFM::internal::Triangle_soup_2<Point>& soup, int to)
   send_vector(m.xy, to, BAND);
   send_vector(m.triangles, to, BAND);
   send_vector(soup.constrained, to, BAND);
+  return 8 * m.xy.size() + 8 * m.triangles.size() + soup.constrained.size();
 }
 
 template <class Point>
@@ -113,6 +115,7 @@ struct Interface_work
   AFM::internal::Band_merge_statistics merge;
   std::size_t widenings = 0;
   double lower_width = 0, upper_width = 0;
+  std::size_t bytes_sent = 0; // the bands sent down (every try)
 };
 
 // The band of the cut starts at 8 sizes of its interface (the seam is
@@ -141,7 +144,7 @@ void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, i
   while(any_rank(lower_pending || upper_pending)) {
     if(lower_pending) {
       w.sent = band_near_cut<K>(part_cdt, d, r - 1, w.lower_width);
-      send_soup(w.sent.soup, rank - 1);
+      w.bytes_sent += send_soup(w.sent.soup, rank - 1);
     }
     if(upper_pending) {
       const AFM::internal::Triangle_soup_2<Point> above = receive_soup<Point>(rank + 1);

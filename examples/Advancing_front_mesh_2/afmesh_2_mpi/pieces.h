@@ -15,7 +15,7 @@
 #include "bands.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Vtu_layout.h>
-#include <CGAL/Handle_hash_function.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h>
 
 #include <array>
 #include <cstdint>
@@ -24,7 +24,6 @@
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 namespace afmesh_2_mpi {
@@ -36,22 +35,51 @@ struct Rank_mesh
   std::vector<char> owned;
   std::vector<std::uint64_t> global_id;
   std::uint64_t owned_count = 0, first_id = 0;
-  std::map<std::pair<double, double>, std::uint64_t> index; // point -> local index
-
-  std::uint64_t add_point(const std::pair<double, double>& p)
-  {
-    const auto inserted = index.emplace(p, points.size());
-    if(inserted.second) points.push_back({{p.first, p.second}});
-    return inserted.first->second;
-  }
-  template <class Face>
-  void add_triangle(const Face& f)
-  {
-    std::array<std::uint64_t, 3> t;
-    for(int k = 0; k < 3; ++k) t[k] = add_point(key_of(f->vertex(k)->point()));
-    triangles.push_back(t);
-  }
 };
+
+// The local index of each vertex of a triangulation that a triangle of the
+// share uses, given when first met (a hash table of the vertices'
+// addresses: a tree of a million points took a tenth of the run).
+class Vertex_numbering
+{
+public:
+  explicit Vertex_numbering(Rank_mesh& m) : m_(m), index_(nullptr) {}
+  void reserve(std::size_t n) { index_.reserve(n); }
+
+  template <class Vertex_handle>
+  std::uint64_t operator()(Vertex_handle v)
+  {
+    if(const std::uint64_t* i = index_.find(&*v)) return *i;
+    m_.points.push_back({{CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}});
+    return index_.insert(&*v, m_.points.size() - 1);
+  }
+  template <class Vertex_handle>
+  const std::uint64_t* find(Vertex_handle v) const
+  {
+    return index_.find(&*v);
+  }
+  // gives vertex v the index `i` (a vertex of another triangulation at the
+  // same point)
+  template <class Vertex_handle>
+  void alias(Vertex_handle v, std::uint64_t i)
+  {
+    index_.insert(&*v, i);
+  }
+
+private:
+  Rank_mesh& m_;
+  AFM::internal::Flat_hash_map<const void*, std::uint64_t> index_;
+};
+
+// The vertex of `band`'s part at each point of its soup.
+template <class K>
+std::vector<typename CDT<K>::Vertex_handle> soup_vertices(const Band<K>& band)
+{
+  std::vector<typename CDT<K>::Vertex_handle> v(band.soup.points.size());
+  for(std::size_t t = 0; t < band.faces.size(); ++t)
+    for(int k = 0; k < 3; ++k) v[band.soup.triangles[t][std::size_t(k)]] = band.faces[t]->vertex(k);
+  return v;
+}
 
 // This rank's share, with every vertex's number.
 template <class K>
@@ -59,21 +87,39 @@ Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank
 {
   typedef typename CDT<K>::Face_handle Face_handle;
   Rank_mesh m;
-  std::unordered_set<Face_handle, CGAL::Handle_hash_function> moved;
-  if(w.has_lower) moved.insert(w.sent.faces.begin(), w.sent.faces.end());
-  if(w.has_upper) moved.insert(w.kept_band.faces.begin(), w.kept_band.faces.end());
-  if(has_part && part_cdt.dimension() == 2)
-    for(auto f = part_cdt.finite_faces_begin(); f != part_cdt.finite_faces_end(); ++f)
-      if(f->is_in_domain() && moved.count(f) == 0) m.add_triangle(f);
-  if(w.has_upper)
-    for(auto f = w.merged.finite_faces_begin(); f != w.merged.finite_faces_end(); ++f)
-      if(f->is_in_domain()) m.add_triangle(f);
-  m.owned.assign(m.points.size(), 1);
+  Vertex_numbering part(m), merged(m);
+  AFM::internal::Flat_hash_map<const void*, char> moved(nullptr);
   if(w.has_lower)
-    for(const auto& p : w.sent.soup.points) {
-      const auto it = m.index.find(key_of(p));
-      if(it != m.index.end()) m.owned[it->second] = 0;
+    for(Face_handle f : w.sent.faces) moved.insert(&*f, 1);
+  if(w.has_upper)
+    for(Face_handle f : w.kept_band.faces) moved.insert(&*f, 1);
+  if(has_part && part_cdt.dimension() == 2) {
+    part.reserve(part_cdt.number_of_vertices());
+    for(auto f = part_cdt.finite_faces_begin(); f != part_cdt.finite_faces_end(); ++f)
+      if(f->is_in_domain() && !moved.contains(&*f))
+        m.triangles.push_back({{part(f->vertex(0)), part(f->vertex(1)), part(f->vertex(2))}});
+  }
+  if(w.has_upper) {
+    // the merged band meets the part's triangles at the band's edge, where
+    // its vertices have not moved: matched by point
+    std::map<std::pair<double, double>, std::uint64_t> at_band_edge;
+    for(const auto& v : soup_vertices<K>(w.kept_band))
+      if(const std::uint64_t* i = part.find(v)) at_band_edge[key_of(v->point())] = *i;
+    for(auto v = w.merged.finite_vertices_begin(); v != w.merged.finite_vertices_end(); ++v) {
+      const auto it = at_band_edge.find(key_of(v->point()));
+      if(it != at_band_edge.end()) merged.alias(v, it->second);
     }
+    for(auto f = w.merged.finite_faces_begin(); f != w.merged.finite_faces_end(); ++f)
+      if(f->is_in_domain())
+        m.triangles.push_back({{merged(f->vertex(0)), merged(f->vertex(1)), merged(f->vertex(2))}});
+  }
+  m.owned.assign(m.points.size(), 1);
+  std::vector<typename CDT<K>::Vertex_handle> sent;
+  if(w.has_lower) {
+    sent = soup_vertices<K>(w.sent);
+    for(const auto& v : sent)
+      if(const std::uint64_t* i = part.find(v)) m.owned[*i] = 0;
+  }
   for(char o : m.owned) m.owned_count += o != 0;
   m.first_id = exclusive_scan(m.owned_count, rank);
   const std::uint64_t unknown = ~std::uint64_t(0);
@@ -84,16 +130,18 @@ Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank
   // the numbers of the band points: down from the rank that owns them
   if(w.has_upper) {
     std::vector<std::uint64_t> ids;
-    for(const auto& v : w.upper_vertices) ids.push_back(m.global_id.at(m.index.at(key_of(v->point()))));
+    for(const auto& v : w.upper_vertices) {
+      const std::uint64_t* i = merged.find(v);
+      if(i == nullptr) throw std::logic_error("a point of the band above is not in the merged band");
+      ids.push_back(m.global_id[*i]);
+    }
     send_vector(ids, rank + 1, BAND_IDS);
   }
   if(w.has_lower) {
     const std::vector<std::uint64_t> ids = receive_vector<std::uint64_t>(rank - 1, BAND_IDS);
-    if(ids.size() != w.sent.soup.points.size()) throw std::logic_error("the band's numbers do not match its points");
-    for(std::size_t k = 0; k < ids.size(); ++k) {
-      const auto it = m.index.find(key_of(w.sent.soup.points[k]));
-      if(it != m.index.end()) m.global_id[it->second] = ids[k];
-    }
+    if(ids.size() != sent.size()) throw std::logic_error("the band's numbers do not match its points");
+    for(std::size_t k = 0; k < ids.size(); ++k)
+      if(const std::uint64_t* i = part.find(sent[k])) m.global_id[*i] = ids[k];
   }
   for(std::uint64_t id : m.global_id)
     if(id == unknown) throw std::logic_error("a vertex of the rank's share has no number");
