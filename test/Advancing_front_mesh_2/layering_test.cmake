@@ -79,6 +79,7 @@ set(AFM_LAYERS
   "B CGAL/Advancing_front_mesh_2/internal/Laplacian_smoother.h"
   "B CGAL/Advancing_front_mesh_2/internal/Star_smoother.h"
   "B CGAL/Advancing_front_mesh_2/internal/Quality_smoother.h"
+  "B CGAL/Advancing_front_mesh_2/internal/Interface_band_2.h"
   "B CGAL/Advancing_front_mesh_2/quality_smooth_mesh_2.h"
   "B CGAL/Advancing_front_mesh_2/Poisson_sizing_field_2.h"
   "B CGAL/Advancing_front_mesh_2/Sizing_field_mesh_criteria_2.h"
