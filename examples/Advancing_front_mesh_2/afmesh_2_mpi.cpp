@@ -34,6 +34,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <sys/resource.h>
 #include <vector>
@@ -164,8 +165,16 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
   // one part: afmesh_2's serial mesher, in the input's triangulation
   CDT<K>& meshed = d.parts == 1 ? in.cdt : part_cdt;
-  if(d.parts == 1 && rank == 0) rc = mesh_whole<K>(m.opt, in, st);
-  else if(d.parts > 1 && std::size_t(rank) < d.parts) rc = mesh_part<K>(m.opt, in, d, std::size_t(rank), part_cdt, st);
+  // from here on a rank may fail alone: what it throws must not pass for
+  // invalid input (which every rank would see), but end every rank
+  // (main()'s MPI_Abort), or its neighbours would wait for it forever
+  try {
+    if(d.parts == 1 && rank == 0) rc = mesh_whole<K>(m.opt, in, st);
+    else if(d.parts > 1 && std::size_t(rank) < d.parts)
+      rc = mesh_part<K>(m.opt, in, d, std::size_t(rank), part_cdt, st);
+  } catch(const std::invalid_argument& e) {
+    throw std::runtime_error(std::string("meshing the part: ") + e.what());
+  }
   const double t_meshing = seconds_since(t_mesh);
   if(sum_over_ranks(st.number_of_faces) == 0)
     throw afmesh_2::Input_error(m.opt.input +
