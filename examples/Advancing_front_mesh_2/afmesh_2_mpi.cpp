@@ -15,8 +15,13 @@
 // and the rank of each triangle (cell data partition); --merge writes one
 // file instead (rank 0 writes it as the ranks send their shares).
 //
+// --stream meshes each rank's part in streaming mode, for parts larger than
+// memory (afmesh_2_mpi/streamed.h): the triangles go to scratch files
+// beside the pieces as they are finished, but for those near the cuts,
+// which the interface merge needs.
+//
 // The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
-// MPI: --stream, checkpoints and --resume, --smooth, --min-angle,
+// MPI: --merge with --stream, checkpoints and --resume, --smooth, --min-angle,
 // --keep-segments, --time-limit, --max-steps, --threads, --kernel other than
 // epick, --histogram, --report, the markers and regions in the outputs, and
 // the formats other than .pvtu, .off and .vtu: they are refused (exit 2).
@@ -25,6 +30,7 @@
 // output that could not be written, or an internal error.
 #include "afmesh_2_mpi/channel.h"
 #include "afmesh_2_mpi/merged.h"
+#include "afmesh_2_mpi/streamed.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -34,6 +40,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <sys/resource.h>
@@ -58,19 +65,24 @@ inline Mpi_options parse(const std::vector<std::string>& args)
 {
   Mpi_options m;
   std::vector<std::string> rest;
-  bool no_output = false, threads = false;
+  bool no_output = false, threads = false, stream = false;
   for(std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if(a == "--help" || a == "-h") {
       std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
-                   "                    (-o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output) [--stats]\n\n"
+                   "                    (-o OUT.pvtu [--stream] | --merge -o OUT.off|OUT.vtu | --no-output)\n"
+                   "                    [--stats]\n\n"
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
-                   "one file. The input and size options are afmesh_2's (afmesh_2 --help).\n";
+                   "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
+                   "scratch files beside the pieces). The input and size options are afmesh_2's\n"
+                   "(afmesh_2 --help).\n";
       std::exit(0);
     }
     if(a == "--merge") {
       m.merge = true;
+    } else if(a == "--stream") {
+      stream = true; // afmesh_2's parser would want its own -o
     } else if(a == "-o" || a == "--output") {
       if(i + 1 == args.size()) throw afmesh_2::Usage_error("the option '" + a + "' requires an argument");
       m.outputs.push_back(args[++i]);
@@ -85,9 +97,9 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   if(no_output && !m.outputs.empty()) throw afmesh_2::Usage_error("--no-output cannot be combined with -o");
   if(!no_output) rest.push_back("--no-output");
   m.opt = afmesh_2::parse(rest);
+  m.opt.stream = stream;
   const afmesh_2::Options& o = m.opt;
-  const char* refused = o.stream                   ? "--stream"
-                        : o.checkpoint_every > 0   ? "--checkpoint-every"
+  const char* refused = o.checkpoint_every > 0     ? "--checkpoint-every"
                         : !o.resume.empty()        ? "--resume"
                         : o.smooth > 0             ? "--smooth"
                         : o.min_angle != 0         ? "--min-angle"
@@ -102,6 +114,8 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   if(refused != nullptr) throw afmesh_2::Usage_error(std::string("afmesh_2_mpi does not support ") + refused + " yet");
   if(m.outputs.empty() && !no_output)
     throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
+  if(o.stream && (m.merge || m.outputs.empty()))
+    throw afmesh_2::Usage_error("--stream writes pieces: give -o OUT.pvtu (without --merge)");
   for(const std::string& out : m.outputs) {
     if(m.merge && !ends_with(out, ".off") && !ends_with(out, ".vtu"))
       throw afmesh_2::Usage_error("--merge writes .off or .vtu, not '" + out + "'");
@@ -150,6 +164,27 @@ inline bool outputs_writable(const Mpi_options& m, int rank, int ranks)
   return true;
 }
 
+// What a rank's share and its interfaces came to.
+struct Share_figures
+{
+  std::uint64_t triangles = 0, owned_vertices = 0, band_triangles = 0, flips = 0, seam_vertices = 0, widenings = 0,
+                band_bytes_sent = 0, held_triangles = 0;
+};
+
+template <class Work>
+Share_figures share_figures(const Work& w, std::uint64_t triangles, std::uint64_t owned_vertices)
+{
+  Share_figures f;
+  f.triangles = triangles;
+  f.owned_vertices = owned_vertices;
+  f.band_triangles = w.merge.band_triangles;
+  f.flips = w.merge.flips;
+  f.seam_vertices = w.merge.seam_vertices;
+  f.widenings = w.widenings;
+  f.band_bytes_sent = w.bytes_sent;
+  return f;
+}
+
 inline int run(const Mpi_options& m, int rank, int ranks)
 {
   const auto t_start = std::chrono::steady_clock::now();
@@ -160,38 +195,61 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   const double t_decomposition = seconds_since(t_start);
 
   const auto t_mesh = std::chrono::steady_clock::now();
+  // this rank's part: with one part, rank 0 meshes the input's
+  // triangulation with afmesh_2's serial mesher
+  const std::size_t part = d.parts == 1 ? (rank == 0 ? 0 : 1) : std::size_t(rank);
+  const bool has_part = part < d.parts;
   CDT<K> part_cdt;
+  if(d.parts > 1 && has_part) build_part<K>(in, d, part, part_cdt);
+  CDT<K>& meshed = d.parts == 1 ? in.cdt : part_cdt;
+  std::unique_ptr<Part_stream<K> > stream;
+  if(m.opt.stream) stream.reset(new Part_stream<K>(d, part, meshed, piece_name(m.outputs.front(), rank)));
   AFM::Statistics st;
   AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
-  // one part: afmesh_2's serial mesher, in the input's triangulation
-  CDT<K>& meshed = d.parts == 1 ? in.cdt : part_cdt;
   // from here on a rank may fail alone: what it throws must not pass for
   // invalid input (which every rank would see), but end every rank
   // (main()'s MPI_Abort), or its neighbours would wait for it forever
   try {
-    if(d.parts == 1 && rank == 0) rc = mesh_whole<K>(m.opt, in, st);
-    else if(d.parts > 1 && std::size_t(rank) < d.parts)
-      rc = mesh_part<K>(m.opt, in, d, std::size_t(rank), part_cdt, st);
+    if(has_part && d.parts == 1) rc = mesh_whole<K>(m.opt, in, stream.get(), st);
+    else if(has_part) rc = mesh_part<K>(m.opt, in, part_cdt, stream.get(), st);
   } catch(const std::invalid_argument& e) {
     throw std::runtime_error(std::string("meshing the part: ") + e.what());
   }
+  if(stream) stream->close();
   const double t_meshing = seconds_since(t_mesh);
   if(sum_over_ranks(st.number_of_faces) == 0)
     throw afmesh_2::Input_error(m.opt.input +
                                 ": nothing to mesh: no bounded region is left once the holes are removed");
 
-  const auto t_merge = std::chrono::steady_clock::now();
-  Interface_work<K> w;
-  merge_interfaces<K>(in, d, rank, meshed, w);
-  const Rank_mesh mesh = rank_mesh<K>(meshed, w, rank, std::size_t(rank) < d.parts);
-  const double t_interfaces = seconds_since(t_merge);
-
-  const auto t_write = std::chrono::steady_clock::now();
-  for(const std::string& out : m.outputs) {
-    if(m.merge) write_merged(out, mesh, rank, ranks, !m.opt.vtu_ascii);
-    else write_piece(out, mesh, rank, ranks, !m.opt.vtu_ascii);
+  // the interfaces merged, the rank's share numbered and written
+  Share_figures share;
+  double t_interfaces = 0, t_writing = 0;
+  if(stream) {
+    const auto t_merge = std::chrono::steady_clock::now();
+    Interface_work<K, Band<K, std::size_t> > w;
+    merge_interfaces<K>(
+      in, d, rank, [&](std::size_t c, double width) { return stream->band(c, width); }, most_streamed_widenings, w);
+    const Streamed_share mesh = streamed_share<K>(*stream, w, rank);
+    t_interfaces = seconds_since(t_merge);
+    const auto t_write = std::chrono::steady_clock::now();
+    for(const std::string& out : m.outputs) write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
+    t_writing = seconds_since(t_write);
+    share = share_figures(w, mesh.triangle_count(), mesh.owned.total());
+    share.held_triangles = stream->held().size();
+  } else {
+    const auto t_merge = std::chrono::steady_clock::now();
+    Interface_work<K> w;
+    merge_interfaces<K>(in, d, rank, meshed, w);
+    const Rank_mesh mesh = rank_mesh<K>(meshed, w, rank, has_part);
+    t_interfaces = seconds_since(t_merge);
+    const auto t_write = std::chrono::steady_clock::now();
+    for(const std::string& out : m.outputs) {
+      if(m.merge) write_merged(out, mesh, rank, ranks, !m.opt.vtu_ascii);
+      else write_piece(out, mesh, rank, ranks, !m.opt.vtu_ascii);
+    }
+    t_writing = seconds_since(t_write);
+    share = share_figures(w, mesh.triangles.size(), mesh.owned_count);
   }
-  const double t_writing = seconds_since(t_write);
 
   // the figures of every rank, printed by rank 0
   rusage usage;
@@ -199,11 +257,9 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   struct Figures
   {
     double meshing, interfaces, writing, peak_memory_mb;
-    std::uint64_t triangles, owned_vertices, band_triangles, flips, seam_vertices, widenings, band_bytes_sent;
+    Share_figures share;
     int code;
-  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, mesh.triangles.size(),
-         mesh.owned_count, w.merge.band_triangles, w.merge.flips, w.merge.seam_vertices, w.widenings,
-         w.bytes_sent, int(rc)};
+  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc)};
   const std::vector<Figures> all = gather_to_root(mine, ranks);
   if(rank == 0 && m.opt.stats) {
     nlohmann::ordered_json j;
@@ -219,15 +275,16 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     std::uint64_t triangles = 0, vertices = 0;
     nlohmann::ordered_json per_rank = nlohmann::ordered_json::array();
     for(const Figures& f : all) {
-      triangles += f.triangles;
-      vertices += f.owned_vertices;
-      per_rank.push_back({{"triangles", f.triangles}, {"owned_vertices", f.owned_vertices},
+      const Share_figures& s = f.share;
+      triangles += s.triangles;
+      vertices += s.owned_vertices;
+      per_rank.push_back({{"triangles", s.triangles}, {"owned_vertices", s.owned_vertices},
                           {"meshing_time", f.meshing}, {"interface_time", f.interfaces},
-                          {"writing_time", f.writing}, {"band_triangles", f.band_triangles},
-                          {"interface_flips", f.flips}, {"seam_vertices", f.seam_vertices},
-                          {"band_widenings", f.widenings}, {"band_bytes_sent", f.band_bytes_sent},
-                          {"peak_memory_mb", f.peak_memory_mb},
-                          {"return_code", f.code}});
+                          {"writing_time", f.writing}, {"band_triangles", s.band_triangles},
+                          {"interface_flips", s.flips}, {"seam_vertices", s.seam_vertices},
+                          {"band_widenings", s.widenings}, {"band_bytes_sent", s.band_bytes_sent},
+                          {"peak_memory_mb", f.peak_memory_mb}, {"return_code", f.code}});
+      if(m.opt.stream) per_rank.back()["held_triangles"] = s.held_triangles;
     }
     j["number_of_faces"] = triangles;
     j["number_of_vertices"] = vertices;

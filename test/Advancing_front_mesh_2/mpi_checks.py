@@ -6,8 +6,10 @@ way: the same vertex and triangle counts, and a share of radius ratios above
 0.9 within half a point (the seams are smoothed in a band instead of in the
 whole mesh); the counts within 1% of the serial mesh. The pieces of a .pvtu
 are read back with meshio: their global vertex numbers must agree with the
-points and, put together, give the --merge mesh. Bad usage and invalid input
-stop every rank with one message and afmesh_2's exit codes.
+points and, put together, give the --merge mesh. Each part streamed
+(--stream) gives pieces that are valid put together, and close to the mesh
+made in memory (the same on one rank). Bad usage and invalid input stop
+every rank with one message and afmesh_2's exit codes.
 
 Usage: mpi_checks.py MPIEXEC AFMESH_2_MPI AFMESH_2 AFM_MAKE_INPUT AFM_CHECK_MESH WORK_DIR [LAKE.msh]
 """
@@ -25,6 +27,7 @@ mpiexec, tool, serial, make_input, checker, work = sys.argv[1:7]
 lake = sys.argv[7] if len(sys.argv) > 7 else ""
 os.makedirs(work, exist_ok=True)
 os.chdir(work)
+os.makedirs("streamed", exist_ok=True)
 
 # OpenMPI keeps some of its start-up allocations to the end: LeakSanitizer
 # (in the sanitizer build) is told about its libraries only, so that a leak
@@ -84,6 +87,47 @@ def valid(poly, mesh, label):
     check(r.returncode == 0, "%s: the checker rejects %s: %s" % (label, mesh, r.stdout.strip()))
 
 
+def read_pieces(pvtu, ranks):
+    """The mesh of a .pvtu's pieces put together by their global vertex
+    numbers, which must run from 0 without gaps, each with one position;
+    every piece must be named by the collection and hold its rank's
+    triangles only. Returns (points, triangles) or None."""
+    directory = os.path.dirname(pvtu)
+    stem = os.path.basename(pvtu)[:-len(".pvtu")]
+    collection = open(pvtu).read()
+    by_id = {}
+    triangles = []
+    for rank in range(ranks):
+        piece = "%s_%d.vtu" % (stem, rank)
+        named = 'Source="%s"' % piece in collection
+        check(named, "%s does not name %s" % (pvtu, piece))
+        if not named:
+            return None
+        m = meshio.read(os.path.join(directory, piece))
+        ids = m.point_data["GlobalNodeId"]
+        check(len(set(ids.tolist())) == len(ids), "%s: a vertex number is given twice" % piece)
+        for i, p in zip(ids, m.points[:, :2]):
+            seen = by_id.setdefault(int(i), tuple(p))
+            check(seen == tuple(p), "%s: vertex %d has two positions in the pieces" % (pvtu, i))
+        cells = m.cells_dict.get("triangle", np.zeros((0, 3), dtype=np.int64))
+        check(len(np.unique(cells)) == len(m.points), "%s: a point of the piece is in no triangle" % piece)
+        part = m.cell_data_dict["partition"]["triangle"] if len(cells) else []
+        check(all(int(k) == rank for k in part), "a triangle of %s is not in partition %d" % (piece, rank))
+        triangles.extend(ids[cells].tolist())
+    gapless = sorted(by_id) == list(range(len(by_id)))
+    check(gapless, "%s: the vertex numbers are not 0 to %d" % (pvtu, len(by_id) - 1))
+    if not gapless:
+        return None
+    return np.array([by_id[i] for i in range(len(by_id))]), np.array(triangles)
+
+
+def write_off(path, points, triangles):
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
+        f.writelines("%.17g %.17g 0\n" % (x, y) for x, y in points)
+        f.writelines("3 %d %d %d\n" % tuple(t) for t in triangles)
+
+
 run(make_input, "square-with-hole", "square.poly", "0.005")
 run(make_input, "multi-element-airfoil", "airfoil.poly")
 
@@ -97,6 +141,34 @@ for n in (1, 2, 4):
     check(stats["parts"] == n, "%s: %d parts" % (label, stats["parts"]))
     check(sum(r["triangles"] for r in stats["per_rank"]) == stats["number_of_faces"],
           "%s: the ranks' triangles do not add up" % label)
+    # --stream: each part streamed to scratch files, the triangles near the
+    # cuts held back for the merge; the same mesh but for the seams (the
+    # frontal mesher of a part streamed may close the front near a cut
+    # differently), valid and constrained Delaunay
+    streamed = json.loads(mpi(n, "square.poly", "--size", "0.005", "--stream", "-o", "streamed/s.pvtu",
+                              "--stats").stdout)
+    check(n == 1 or all(r["held_triangles"] > 0 for r in streamed["per_rank"]),
+          "%s, streamed: a rank held back no triangle" % label)
+    check(not [f for f in os.listdir("streamed") if f.endswith(".tmp")],
+          "%s, streamed: scratch files are left: %s" % (label, os.listdir("streamed")))
+    pieces = read_pieces("streamed/s.pvtu", n)
+    if pieces is not None:
+        s_points, s_triangles = pieces
+        write_off("streamed.off", s_points, s_triangles)
+        valid("square.poly", "streamed.off", label + ", streamed")
+        m_points, m_triangles = read_off("mpi.off")
+        check(len(s_triangles) == streamed["number_of_faces"] and len(s_points) == streamed["number_of_vertices"],
+              "%s, streamed: --stats says %d triangles and %d vertices, the pieces hold %d and %d" %
+              (label, streamed["number_of_faces"], streamed["number_of_vertices"], len(s_triangles),
+               len(s_points)))
+        if n == 1:
+            check(triangle_set(s_points, s_triangles) == triangle_set(m_points, m_triangles),
+                  "%s, streamed: not the mesh made in memory" % label)
+        check(abs(len(s_triangles) - len(m_triangles)) <= 0.001 * len(m_triangles),
+              "%s, streamed: %d triangles, in memory %d" % (label, len(s_triangles), len(m_triangles)))
+        mine, theirs = share_above_0_9(s_points, s_triangles), share_above_0_9(m_points, m_triangles)
+        check(abs(mine - theirs) <= 0.2, "%s, streamed: share above 0.9 %.2f%%, in memory %.2f%%" %
+              (label, mine, theirs))
     run(serial, "square.poly", "--size", "0.005", "--threads", str(n), "-o", "threads.off")
     points, triangles = read_off("mpi.off")
     t_points, t_triangles = read_off("threads.off")
@@ -113,32 +185,17 @@ os.makedirs("pieces", exist_ok=True)
 mpi(3, "airfoil.poly", "--size", "0.02", "-o", "pieces/airfoil.pvtu")
 mpi(3, "airfoil.poly", "--size", "0.02", "--merge", "-o", "merged.off")
 valid("airfoil.poly", "merged.off", "airfoil, 3 ranks")
-collection = open("pieces/airfoil.pvtu").read()
-by_id = {}
-triangles = []
-for rank in range(3):
-    piece = "airfoil_%d.vtu" % rank
-    check('Source="%s"' % piece in collection, "the collection does not name %s" % piece)
-    m = meshio.read(os.path.join("pieces", piece))
-    ids = m.point_data["GlobalNodeId"]
-    for i, p in zip(ids, m.points[:, :2]):
-        seen = by_id.setdefault(int(i), tuple(p))
-        check(seen == tuple(p), "vertex %d has two positions in the pieces" % i)
-    cells = m.cells_dict.get("triangle", np.zeros((0, 3), dtype=np.int64))
-    part = m.cell_data_dict["partition"]["triangle"] if len(cells) else []
-    check(all(int(k) == rank for k in part), "a triangle of piece %d is not in partition %d" % (rank, rank))
-    triangles.extend(ids[cells].tolist())
+
+
 merged_points, merged_triangles = read_off("merged.off")
-check(sorted(by_id) == list(range(len(merged_points))),
-      "the pieces' vertex numbers are not 0 to %d" % (len(merged_points) - 1))
-if sorted(by_id) == list(range(len(merged_points))):
-    points = np.array([by_id[i] for i in range(len(by_id))])
-    check(triangle_set(points, np.array(triangles)) == triangle_set(merged_points, merged_triangles),
+pieces = read_pieces("pieces/airfoil.pvtu", 3)
+if pieces is not None:
+    points, triangles = pieces
+    check(len(points) == len(merged_points), "the pieces have %d vertices, the merged mesh %d" %
+          (len(points), len(merged_points)))
+    check(triangle_set(points, triangles) == triangle_set(merged_points, merged_triangles),
           "the pieces put together are not the merged mesh")
-    with open("from_pieces.off", "w") as f:
-        f.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
-        f.writelines("%.17g %.17g 0\n" % (x, y) for x, y in points)
-        f.writelines("3 %d %d %d\n" % tuple(t) for t in triangles)
+    write_off("from_pieces.off", points, triangles)
     valid("airfoil.poly", "from_pieces.off", "airfoil pieces")
 
 # fewer parts than ranks: a domain too small for 3 parts of 2,000 triangles
@@ -167,6 +224,10 @@ if lake and os.path.exists(lake):
 # bad usage and invalid input: afmesh_2's codes, one message (rank 0's)
 r = mpi(2, "square.poly", "--size", "0.01", "--smooth", "3", "-o", "x.pvtu", code=2)
 check("does not support --smooth" in r.stderr, "--smooth: " + r.stderr)
+r = mpi(2, "square.poly", "--size", "0.01", "--stream", "--merge", "-o", "x.off", code=2)
+check("--stream writes pieces" in r.stderr, "--stream with --merge: " + r.stderr)
+r = mpi(2, "square.poly", "--size", "0.01", "--stream", "--no-output", code=2)
+check("--stream writes pieces" in r.stderr, "--stream with --no-output: " + r.stderr)
 r = mpi(2, "square.poly", "--size", "0.01", "-o", "x.off", code=2)
 check("collection of pieces" in r.stderr, "-o x.off without --merge: " + r.stderr)
 r = mpi(2, "missing.poly", "--size", "0.01", "-o", "x.pvtu", code=1)

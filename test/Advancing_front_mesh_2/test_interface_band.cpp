@@ -2,7 +2,8 @@
 // (internal/Interface_band_2.h, which afmesh_2_mpi uses between ranks): two
 // meshed parts merged whole are valid and constrained Delaunay under the
 // independent checker; a flip that reaches the band's outer edge is
-// reported; triangles given twice are refused.
+// reported; triangles given twice are refused; the merge does not depend on
+// the order in which the soups hold their triangles.
 #include "afm_test_harness.h"
 
 #include "afm_geometries.h"
@@ -11,7 +12,9 @@
 #include <CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,20 +40,26 @@ Soup soup_of(const std::vector<Point>& points, const std::vector<std::array<std:
 const auto everywhere = [](const Point&) { return true; };
 const auto nowhere = [](const Point&) { return false; };
 
-} // namespace
-
 // The square with a hole cut in two and each part meshed in a triangulation
-// of its own, as afmesh_2_mpi's ranks do; the parts' triangles, merged whole
-// (no outer edge), give the merged mesh: every triangle kept, valid and
-// constrained Delaunay across the released interface, its seam smoothed.
-AFM_TEST_CASE(test_interface_band_merges_two_meshed_parts)
+// of its own, as afmesh_2_mpi's ranks do: the parts' triangles as soups,
+// the interface edges (on the cut's line) released, the input's kept.
+struct Two_parts
+{
+  afm_test::Poly_data in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02);
+  std::vector<Soup> soups;
+  std::size_t part_triangles = 0;
+  double cut = 0;
+  int axis = 0;
+};
+
+Two_parts two_meshed_parts()
 {
   typedef CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> > Mesh_2_mesher;
-  const afm_test::Poly_data in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.02);
+  Two_parts t;
   const AFM::Uniform_sizing_field_2<Epick> size(0.02);
   CDT cdt;
-  afm_test::build_cdt(cdt, in);
-  const auto seed_list = afm_test::seeds_of<CDT>(in);
+  afm_test::build_cdt(cdt, t.in);
+  const auto seed_list = afm_test::seeds_of<CDT>(t.in);
   const std::vector<Point> seeds(seed_list.begin(), seed_list.end());
   Mesh_2_mesher::mark_facets(cdt, seeds.begin(), seeds.end(), false);
   const AFM::internal::Strip_plan plan = AFM::internal::plan_strips(cdt, size, 2);
@@ -61,44 +70,111 @@ AFM_TEST_CASE(test_interface_band_merges_two_meshed_parts)
   std::vector<std::vector<std::pair<Point, Point> > > constraints;
   std::vector<std::vector<Point> > free_points;
   AFM::internal::part_inputs(cdt, plan, constraints, free_points);
-  const double cut = plan.cuts[0].position;
-  std::vector<Soup> soups;
-  std::size_t part_triangles = 0;
+  t.cut = plan.cuts[0].position;
+  t.axis = plan.axis;
   for(std::size_t part = 0; part < 2; ++part) {
     CDT part_cdt;
     AFM::internal::build_part(cdt, plan, part, constraints[part], chains, free_points[part], part_cdt);
     CGAL::Advancing_front_mesher_2<CDT, AFM::Uniform_sizing_field_2<Epick> > mesher(part_cdt, size);
     mesher.use_domain_marks();
     AFM_CHECK(mesher.refine_mesh() == AFM::MESH_COMPLETE);
-    // the interface edges (on the cut's line) are released, the input's kept
     auto on_cut = [&](CDT::Vertex_handle v) {
-      return AFM::internal::coordinate(v->point().x(), v->point().y(), plan.axis) == cut;
+      return AFM::internal::coordinate(v->point().x(), v->point().y(), plan.axis) == t.cut;
     };
     Soup s = AFM::internal::triangles_of(
       part_cdt, [](CDT::Face_handle f) { return f->is_in_domain(); },
       [&](CDT::Face_handle f, int k) {
         return f->is_constrained(k) && !(on_cut(f->vertex(CDT::ccw(k))) && on_cut(f->vertex(CDT::cw(k))));
       });
-    part_triangles += s.triangles.size();
-    soups.push_back(std::move(s));
+    t.part_triangles += s.triangles.size();
+    t.soups.push_back(std::move(s));
   }
+  return t;
+}
+
+// The soups merged whole, the seam (3 sizes from the cut) smoothed.
+bool merge_whole(const Two_parts& t, const Soup& a, const Soup& b, CDT& band,
+                 AFM::internal::Band_merge_statistics& st)
+{
+  auto in_seam = [&](const Point& p) {
+    return std::abs(AFM::internal::coordinate(p.x(), p.y(), t.axis) - t.cut) <= 3 * 0.02;
+  };
+  return AFM::internal::merge_interface_band<CDT, Point>({&a, &b}, in_seam, 3, band, st);
+}
+
+} // namespace
+
+// The two parts' triangles, merged whole (no outer edge), give the merged
+// mesh: every triangle kept, valid and constrained Delaunay across the
+// released interface, its seam smoothed.
+AFM_TEST_CASE(test_interface_band_merges_two_meshed_parts)
+{
+  const Two_parts t = two_meshed_parts();
   CDT band;
   AFM::internal::Band_merge_statistics bst;
-  auto in_seam = [&](const Point& p) {
-    return std::abs(AFM::internal::coordinate(p.x(), p.y(), plan.axis) - cut) <= 3 * 0.02;
-  };
-  const bool settled = AFM::internal::merge_interface_band<CDT, Point>({&soups[0], &soups[1]}, in_seam, 3, band, bst);
+  const bool settled = merge_whole(t, t.soups[0], t.soups[1], band, bst);
   std::cout << "  " << bst.band_triangles << " triangles, " << bst.outer_edges << " outer edges, " << bst.flips
             << " flips, " << bst.seam_vertices << " seam vertices, " << bst.seam_smoothing.moves
             << " moves\n";
   AFM_CHECK(settled);
-  AFM_CHECK(bst.outer_edges == 0 && bst.band_triangles == part_triangles);
+  AFM_CHECK(bst.outer_edges == 0 && bst.band_triangles == t.part_triangles);
   AFM_CHECK(bst.seam_vertices > 0);
   AFM_CHECK(band.is_valid());
   const afm_check::Mesh mesh = afm_test::extract_mesh(band);
-  AFM_CHECK(mesh.triangles.size() == part_triangles);
-  const afm_check::Report report = afm_test::check_split_mesh(in, mesh);
+  AFM_CHECK(mesh.triangles.size() == t.part_triangles);
+  const afm_check::Report report = afm_test::check_split_mesh(t.in, mesh);
   AFM_CHECK_MSG(report.ok, report.summary());
+}
+
+// A part in memory and the same part streamed hold their band's triangles
+// in different orders, each triangle from a different first vertex: sorted
+// (sort_soup), the soups are the same, and so is the merged mesh, point for
+// point, seam smoothing included.
+AFM_TEST_CASE(test_interface_band_merge_depends_on_the_triangles_only)
+{
+  const Two_parts t = two_meshed_parts();
+  std::vector<Soup> sorted = t.soups, shuffled;
+  for(const Soup& s : t.soups) {
+    // the triangles reversed, each rotated by one (its flags with it), the
+    // points in the reverse order
+    Soup r;
+    const std::size_t n = s.points.size();
+    r.points.assign(s.points.rbegin(), s.points.rend());
+    for(std::size_t i = s.triangles.size(); i-- > 0;) {
+      const auto& a = s.triangles[i];
+      r.triangles.push_back({{n - 1 - a[1], n - 1 - a[2], n - 1 - a[0]}});
+      const unsigned char f = s.constrained[i];
+      r.constrained.push_back(static_cast<unsigned char>(((f >> 1) & 3) | ((f & 1) << 2)));
+    }
+    shuffled.push_back(std::move(r));
+  }
+  for(Soup& s : sorted) AFM::internal::sort_soup<Point, int>(s);
+  for(Soup& s : shuffled) AFM::internal::sort_soup<Point, int>(s);
+  for(std::size_t k = 0; k < 2; ++k) {
+    AFM_CHECK(sorted[k].points == shuffled[k].points);
+    // the same triangles from the same first vertex need not be: compare
+    // each as its points' set, in order
+    AFM_CHECK(sorted[k].triangles.size() == shuffled[k].triangles.size());
+  }
+  CDT one, other;
+  AFM::internal::Band_merge_statistics st_one, st_other;
+  AFM_CHECK(merge_whole(t, sorted[0], sorted[1], one, st_one));
+  AFM_CHECK(merge_whole(t, shuffled[0], shuffled[1], other, st_other));
+  AFM_CHECK(st_one.seam_smoothing.moves > 0);
+  auto triangles_of = [](const CDT& band) {
+    std::set<std::array<std::pair<double, double>, 3> > set;
+    for(auto f = band.finite_faces_begin(); f != band.finite_faces_end(); ++f) {
+      if(!f->is_in_domain()) continue;
+      std::array<std::pair<double, double>, 3> tri;
+      for(int k = 0; k < 3; ++k) tri[std::size_t(k)] = {f->vertex(k)->point().x(), f->vertex(k)->point().y()};
+      std::sort(tri.begin(), tri.end());
+      set.insert(tri);
+    }
+    return set;
+  };
+  const auto a = triangles_of(one), b = triangles_of(other);
+  AFM_CHECK_MSG(a == b, a.size() << " and " << b.size() << " triangles");
+  AFM_CHECK(a.size() == t.part_triangles);
 }
 
 // A quadrilateral whose diagonal is not Delaunay, one triangle on each side

@@ -25,13 +25,16 @@
 
 namespace afmesh_2_mpi {
 
-// A band, the triangles of a part near a cut, with the part's faces it
-// holds (so that the part can leave them out of its own output).
-template <class K>
+// A band, the triangles of a part near a cut, with the part's triangles it
+// holds (so that the part can leave them out of its own output): faces of
+// the part's triangulation in memory, or indices of the triangles a
+// streamed part held back (streamed.h).
+template <class K, class Triangle = typename CDT<K>::Face_handle>
 struct Band
 {
+  typedef Triangle Triangle_handle;
   AFM::internal::Triangle_soup_2<typename K::Point_2> soup;
-  std::vector<typename CDT<K>::Face_handle> faces;
+  std::vector<Triangle> faces;
 };
 
 // The band of `part_cdt` near cut `c`: its in-domain triangles with a vertex
@@ -60,6 +63,7 @@ Band<K> band_near_cut(const CDT<K>& part_cdt, const Decomposition<K>& d, std::si
              !(on_interface(f->vertex(CDT<K>::ccw(k))) && on_interface(f->vertex(CDT<K>::cw(k))));
     },
     &band.faces);
+  AFM::internal::sort_soup(band.soup, &band.faces);
   return band;
 }
 
@@ -100,18 +104,19 @@ AFM::internal::Triangle_soup_2<Point> receive_soup(int from)
 }
 
 // What this rank did at its two interfaces.
-template <class K>
+template <class K, class Band_type = Band<K> >
 struct Interface_work
 {
   // cut r - 1 (below): the band sent to rank r - 1 once it settled
   bool has_lower = false;
-  Band<K> sent;
+  Band_type sent;
   // cut r (above): this rank's band, the merged band it now owns, and the
-  // vertices of rank r + 1's band in it, by rank r + 1's point order
+  // vertices of its band and of rank r + 1's in it, by the bands' point
+  // orders
   bool has_upper = false;
-  Band<K> kept_band;
+  Band_type kept_band;
   CDT<K> merged;
-  std::vector<typename CDT<K>::Vertex_handle> upper_vertices;
+  std::vector<typename CDT<K>::Vertex_handle> own_vertices, upper_vertices;
   AFM::internal::Band_merge_statistics merge;
   std::size_t widenings = 0;
   double lower_width = 0, upper_width = 0;
@@ -120,17 +125,21 @@ struct Interface_work
 
 // The band of the cut starts at 8 sizes of its interface (the seam is
 // within 6: as mesh_in_parallel_2(), 3 local sizes and twice 3 interface
-// sizes) and is doubled when a merge reaches its edge, at most 4 times.
+// sizes) and is doubled when a merge reaches its edge, at most 4 times (2
+// when the part is streamed: it holds back the triangles within 32 sizes).
 constexpr double initial_band_sizes = 8;
 constexpr std::size_t seam_passes = 3;
 constexpr double seam_width = 3;
 constexpr std::size_t most_widenings = 4;
+constexpr std::size_t most_streamed_widenings = 2;
 
-// Merges every interface between the ranks' parts; throws
-// std::runtime_error when a band cannot settle within its part.
-template <class K>
-void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, int rank, CDT<K>& part_cdt,
-                      Interface_work<K>& w)
+// Merges every interface between the ranks' parts, the band of this rank's
+// part near cut c of width w being band_of(c, w), widened at most
+// `widenings` times; throws std::runtime_error when a band cannot settle
+// within its part.
+template <class K, class Band_type, class Band_of>
+void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, int rank, const Band_of& band_of,
+                      std::size_t widenings, Interface_work<K, Band_type>& w)
 {
   typedef typename K::Point_2 Point;
   const std::size_t r = std::size_t(rank);
@@ -143,12 +152,12 @@ void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, i
   std::string failure;
   while(any_rank(lower_pending || upper_pending)) {
     if(lower_pending) {
-      w.sent = band_near_cut<K>(part_cdt, d, r - 1, w.lower_width);
+      w.sent = band_of(r - 1, w.lower_width);
       w.bytes_sent += send_soup(w.sent.soup, rank - 1);
     }
     if(upper_pending) {
       const AFM::internal::Triangle_soup_2<Point> above = receive_soup<Point>(rank + 1);
-      w.kept_band = band_near_cut<K>(part_cdt, d, r, w.upper_width);
+      w.kept_band = band_of(r, w.upper_width);
       const double position = d.plan.cuts[r].position, interface_size = d.interface_size[r];
       // the seam, as mesh_in_parallel_2()'s seam_vertices()
       auto in_seam = [&](const Point& p) {
@@ -167,10 +176,11 @@ void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, i
         error = e.what(); // rank r + 1 must hear the verdict all the same
       }
       unsigned char verdict = settled ? 1 : 0;
-      if(!error.empty() || (!settled && w.widenings == most_widenings)) verdict = 2; // give up
+      if(!error.empty() || (!settled && w.widenings == widenings)) verdict = 2; // give up
       MPI_Send(&verdict, 1, MPI_UNSIGNED_CHAR, rank + 1, BAND_VERDICT, MPI_COMM_WORLD);
       if(settled) {
         upper_pending = false;
+        w.own_vertices = soup_vertices[0];
         w.upper_vertices = soup_vertices[1];
       } else if(verdict == 2) {
         upper_pending = false;
@@ -206,6 +216,16 @@ void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, i
   }
   if(any_rank(!failure.empty()))
     throw std::runtime_error(failure.empty() ? "another rank could not merge an interface" : failure);
+}
+
+// The interfaces of a part meshed in memory, in `part_cdt`.
+template <class K>
+void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, int rank, const CDT<K>& part_cdt,
+                      Interface_work<K>& w)
+{
+  merge_interfaces<K>(
+    in, d, rank, [&](std::size_t c, double width) { return band_near_cut<K>(part_cdt, d, c, width); },
+    most_widenings, w);
 }
 
 } // namespace afmesh_2_mpi

@@ -83,20 +83,16 @@ inline void write_merged(const std::string& out, const Rank_mesh& m, int rank, i
                   raw.clear();
                 }
               },
-              [&](std::string& raw) {
+              [&](std::string& raw, bool wide) {
                 for(int r = 0; r < ranks; ++r) {
                   const std::vector<std::uint64_t> t = triangles_of(r);
-                  for(std::size_t i = 0; i + 2 < t.size(); i += 3) {
-                    if(binary)
-                      for(int k = 0; k < 3; ++k) vtu::vtu_append_raw(raw, std::int64_t(t[i + k]));
-                    else
-                      os << t[i] << ' ' << t[i + 1] << ' ' << t[i + 2] << '\n';
-                  }
+                  for(std::size_t i = 0; i < t.size(); ++i)
+                    put_index(os, raw, binary, wide, t[i], i % 3 == 2 ? '\n' : ' ');
                   os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
                   raw.clear();
                 }
               },
-              nullptr);
+              {});
   }
   os.close();
   if(os.fail()) throw std::runtime_error("cannot write " + out);

@@ -14,6 +14,7 @@
 
 #include "../afmesh_2/meshing.h"
 
+#include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h>
 
 #include <set>
@@ -95,27 +96,40 @@ Decomposition<K> decompose(afmesh_2::Input<K>& in, int ranks)
   return d;
 }
 
-// Part `part` built in `part_cdt` and meshed; returns the mesher's code.
 template <class K>
-AFM::Mesh_return_code mesh_part(const afmesh_2::Options& opt, const afmesh_2::Input<K>& in,
-                                const Decomposition<K>& d, std::size_t part, CDT<K>& part_cdt,
-                                AFM::Statistics& st)
+using Sink = AFM::Mesh_sink_2<typename K::Point_2>;
+
+// Part `part` built in `part_cdt`.
+template <class K>
+void build_part(const afmesh_2::Input<K>& in, const Decomposition<K>& d, std::size_t part, CDT<K>& part_cdt)
 {
   AFM::internal::build_part(in.cdt, d.plan, part, d.constraints[part], d.chains_of_cut, d.free_points[part],
                             part_cdt);
+}
+
+// The part built in `part_cdt` meshed (in streaming mode when `sink` is
+// given); returns the mesher's code.
+template <class K>
+AFM::Mesh_return_code mesh_part(const afmesh_2::Options& opt, const afmesh_2::Input<K>& in, CDT<K>& part_cdt,
+                                Sink<K>* sink, AFM::Statistics& st)
+{
   CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> > mesher(part_cdt, in.sizing);
   mesher.use_domain_marks();
+  if(sink != nullptr) mesher.set_output_sink(sink);
   mesher.set_pocket_priority(!opt.no_pocket_priority);
   const AFM::Mesh_return_code rc = mesher.refine_mesh();
   st = mesher.statistics();
   return rc;
 }
 
-// The domain in one part: meshed as afmesh_2 does on one thread.
+// The domain in one part: meshed as afmesh_2 does on one thread (in
+// streaming mode when `sink` is given).
 template <class K>
-AFM::Mesh_return_code mesh_whole(const afmesh_2::Options& opt, afmesh_2::Input<K>& in, AFM::Statistics& st)
+AFM::Mesh_return_code mesh_whole(const afmesh_2::Options& opt, afmesh_2::Input<K>& in, Sink<K>* sink,
+                                 AFM::Statistics& st)
 {
   CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> > mesher(in.cdt, in.sizing);
+  if(sink != nullptr) mesher.set_output_sink(sink);
   mesher.set_seeds(in.seeds.begin(), in.seeds.end());
   mesher.set_constraint_splitting(false); // load_input() did it
   mesher.set_pocket_priority(!opt.no_pocket_priority);

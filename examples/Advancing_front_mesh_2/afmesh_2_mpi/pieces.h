@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <stdexcept>
@@ -156,17 +157,38 @@ struct Stream_out
 
 namespace vtu = CGAL::Advancing_front_mesh_2::IO::internal;
 
+// Connectivity and offsets are Int32 when every value fits (a piece of
+// fewer than 715 million triangles), Int64 otherwise: a third less disk for
+// the pieces of a large mesh.
+inline bool wide_indices(std::uint64_t nv, std::uint64_t nt)
+{
+  const std::uint64_t int32_max = 2147483647u;
+  return nv > int32_max || 3 * nt > int32_max;
+}
+
+// Appends index `v` to a binary array, or prints it.
+inline void put_index(std::ostream& os, std::string& raw, bool binary, bool wide, std::uint64_t v, char end)
+{
+  if(!binary) os << v << end;
+  else if(wide) vtu::vtu_append_raw(raw, std::int64_t(v));
+  else vtu::vtu_append_raw(raw, std::int32_t(v));
+}
+
 // The arrays of a .vtu of `nv` points and the triangles counted per rank in
-// `triangles_per_rank`: `points(raw)` and `connectivity(raw)` append the
-// values (binary) or print them (ASCII); the partition of each triangle is
-// its rank, counted from `first_rank`.
+// `triangles_per_rank`: `points(raw)` and `connectivity(raw, wide)` append
+// the values (binary; Int64 indices when `wide`, else Int32) or print them
+// (ASCII), and so does `global_ids(raw)` (when set); the partition of each
+// triangle is its rank, counted from `first_rank`.
 template <class Points, class Connectivity>
 void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64_t>& triangles_per_rank,
                int first_rank, bool binary, const Points& points, const Connectivity& connectivity,
-               const std::vector<std::uint64_t>* global_ids)
+               const std::function<void(std::string&)>& global_ids)
 {
   std::uint64_t nt = 0;
   for(std::uint64_t n : triangles_per_rank) nt += n;
+  const bool wide = wide_indices(nv, nt);
+  const std::uint64_t index_bytes = wide ? 8 : 4;
+  const std::string index_type = wide ? "Int64" : "Int32";
   std::string raw;
   auto flush = [&] {
     os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
@@ -177,14 +199,14 @@ void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64
     points(raw);
     flush();
   }});
-  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"Int64\" Name=\"connectivity\"", 24 * nt, [&] {
-    connectivity(raw);
-    flush();
-  }});
-  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"Int64\" Name=\"offsets\"", 8 * nt, [&] {
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"" + index_type + "\" Name=\"connectivity\"",
+                    3 * index_bytes * nt, [&] {
+                      connectivity(raw, wide);
+                      flush();
+                    }});
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"" + index_type + "\" Name=\"offsets\"", index_bytes * nt, [&] {
     for(std::uint64_t t = 1; t <= nt; ++t) {
-      if(binary) vtu::vtu_append_raw(raw, std::int64_t(3 * t));
-      else os << 3 * t << '\n';
+      put_index(os, raw, binary, wide, 3 * t, '\n');
       if(raw.size() > (1u << 20)) flush();
     }
     flush();
@@ -197,12 +219,9 @@ void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64
     }
     flush();
   }});
-  if(global_ids != nullptr)
+  if(global_ids)
     arrays.push_back({vtu::Vtu_section::POINT_DATA, "type=\"Int64\" Name=\"GlobalNodeId\"", 8 * nv, [&] {
-      for(std::uint64_t id : *global_ids) {
-        if(binary) vtu::vtu_append_raw(raw, std::int64_t(id));
-        else os << id << '\n';
-      }
+      global_ids(raw);
       flush();
     }});
   arrays.push_back({vtu::Vtu_section::CELL_DATA, "type=\"Int32\" Name=\"partition\"", 4 * nt, [&] {
@@ -244,6 +263,24 @@ inline std::string base_name(const std::string& path)
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// The collection file OUT.pvtu (rank 0): the pieces of the ranks that have
+// triangles (meshio cannot read a piece without cells).
+inline void write_collection(const std::string& pvtu, const std::vector<std::uint64_t>& triangles_per_rank, int ranks)
+{
+  std::ofstream os(pvtu);
+  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\""
+     << (vtu::vtu_host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
+     << "<PUnstructuredGrid GhostLevel=\"0\">\n"
+     << "<PPointData><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/></PPointData>\n"
+     << "<PCellData><PDataArray type=\"Int32\" Name=\"partition\"/></PCellData>\n"
+     << "<PPoints><PDataArray type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
+  for(int r = 0; r < ranks; ++r)
+    if(triangles_per_rank[std::size_t(r)] > 0) os << "<Piece Source=\"" << base_name(piece_name(pvtu, r)) << "\"/>\n";
+  os << "</PUnstructuredGrid>\n</VTKFile>\n";
+  os.close();
+  if(os.fail()) throw std::runtime_error("cannot write " + pvtu);
+}
+
 // This rank's piece of OUT.pvtu (OUT_<rank>.vtu), and the collection file
 // (rank 0). A rank with no triangles writes no piece, and the collection
 // names only the others (meshio cannot read a piece without cells). Throws
@@ -257,31 +294,17 @@ inline void write_piece(const std::string& pvtu, const Rank_mesh& m, int rank, i
     os << std::setprecision(17);
     write_vtu(os, m.points.size(), {m.triangles.size()}, rank, binary,
               [&](std::string& raw) { append_points(os, raw, binary, m.points, nullptr); },
-              [&](std::string& raw) {
-                for(const auto& t : m.triangles) {
-                  if(binary)
-                    for(std::uint64_t v : t) vtu::vtu_append_raw(raw, std::int64_t(v));
-                  else
-                    os << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-                }
+              [&](std::string& raw, bool wide) {
+                for(const auto& t : m.triangles)
+                  for(int k = 0; k < 3; ++k) put_index(os, raw, binary, wide, t[std::size_t(k)], k == 2 ? '\n' : ' ');
               },
-              &m.global_id);
+              [&](std::string& raw) {
+                for(std::uint64_t id : m.global_id) put_index(os, raw, binary, true, id, '\n');
+              });
     os.close();
     if(os.fail()) throw std::runtime_error("cannot write " + name);
   }
-  if(rank != 0) return;
-  std::ofstream os(pvtu);
-  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\""
-     << (vtu::vtu_host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
-     << "<PUnstructuredGrid GhostLevel=\"0\">\n"
-     << "<PPointData><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/></PPointData>\n"
-     << "<PCellData><PDataArray type=\"Int32\" Name=\"partition\"/></PCellData>\n"
-     << "<PPoints><PDataArray type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
-  for(int r = 0; r < ranks; ++r)
-    if(triangles_per_rank[std::size_t(r)] > 0) os << "<Piece Source=\"" << base_name(piece_name(pvtu, r)) << "\"/>\n";
-  os << "</PUnstructuredGrid>\n</VTKFile>\n";
-  os.close();
-  if(os.fail()) throw std::runtime_error("cannot write " + pvtu);
+  if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks);
 }
 
 } // namespace afmesh_2_mpi

@@ -19,6 +19,7 @@
 
 #include <CGAL/Handle_hash_function.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <map>
@@ -59,12 +60,6 @@ struct Triangle_soup_2
   // input constraint (kept; an interface edge is not one)
   std::vector<unsigned char> constrained;
 
-  void clear()
-  {
-    points.clear();
-    triangles.clear();
-    constrained.clear();
-  }
 };
 
 struct Band_merge_statistics
@@ -90,8 +85,17 @@ insert_band(const std::vector<const Triangle_soup_2<Point>*>& soups, CDT& band,
   typedef typename CDT::Face_handle Face_handle;
   std::vector<std::array<Vertex_handle, 3> > triangles;
   // every edge once, constrained when any soup says so; how many triangles
-  // have it
-  std::map<std::pair<Vertex_handle, Vertex_handle>, std::pair<int, bool> > edges;
+  // have it. Edges are keyed by the order their vertices were first met,
+  // not by address, so that the flips (in the order of the released edges)
+  // and the result depend on the soups only.
+  struct Edge_use
+  {
+    Vertex_handle a, b;
+    int triangles;
+    bool constrained;
+  };
+  std::map<Vertex_handle, std::size_t> ordinal;
+  std::map<std::pair<std::size_t, std::size_t>, Edge_use> edges;
   Face_handle hint;
   for(const Triangle_soup_2<Point>* soup : soups) {
     std::vector<Vertex_handle> vh;
@@ -99,21 +103,26 @@ insert_band(const std::vector<const Triangle_soup_2<Point>*>& soups, CDT& band,
     for(const Point& p : soup->points) {
       vh.push_back(band.insert(p, hint)); // an equal point gives the same vertex
       hint = vh.back()->face();
+      ordinal.emplace(vh.back(), ordinal.size());
     }
     for(std::size_t t = 0; t < soup->triangles.size(); ++t) {
       const std::array<std::size_t, 3>& tri = soup->triangles[t];
       triangles.push_back({{vh[tri[0]], vh[tri[1]], vh[tri[2]]}});
       for(int k = 0; k < 3; ++k) {
         Vertex_handle a = vh[tri[(k + 1) % 3]], b = vh[tri[(k + 2) % 3]];
-        if(b < a) std::swap(a, b);
-        std::pair<int, bool>& e = edges[std::make_pair(a, b)];
-        ++e.first;
-        e.second = e.second || ((soup->constrained[t] >> k) & 1) != 0;
+        std::size_t i = ordinal[a], j = ordinal[b];
+        if(j < i) {
+          std::swap(a, b);
+          std::swap(i, j);
+        }
+        Edge_use& e = edges.emplace(std::make_pair(i, j), Edge_use{a, b, 0, false}).first->second;
+        ++e.triangles;
+        e.constrained = e.constrained || ((soup->constrained[t] >> k) & 1) != 0;
       }
     }
     if(soup_vertices != nullptr) soup_vertices->push_back(std::move(vh));
   }
-  for(const auto& e : edges) band.insert_constraint(e.first.first, e.first.second);
+  for(const auto& e : edges) band.insert_constraint(e.second.a, e.second.b);
   for(auto f = band.all_faces_begin(); f != band.all_faces_end(); ++f) f->set_in_domain(false);
   for(const auto& t : triangles) {
     Face_handle f;
@@ -124,18 +133,19 @@ insert_band(const std::vector<const Triangle_soup_2<Point>*>& soups, CDT& band,
   }
   outer.clear();
   released.clear();
-  for(const auto& e : edges) {
+  for(const auto& entry : edges) {
+    const Edge_use& e = entry.second;
     Face_handle f;
     int i;
-    if(!band.is_edge(e.first.first, e.first.second, f, i))
+    if(!band.is_edge(e.a, e.b, f, i))
       throw std::logic_error("interface band: an edge of the triangles is not an edge of the band");
-    if(e.second.first > 2)
+    if(e.triangles > 2)
       throw std::logic_error("interface band: an edge is shared by more than two triangles");
-    if(e.second.first == 1) {
-      if(!e.second.second) outer.push_back(e.first);
+    if(e.triangles == 1) {
+      if(!e.constrained) outer.emplace_back(e.a, e.b);
       continue; // held: an outer edge or an input constraint at the band's edge
     }
-    if(e.second.second) continue; // an input constraint inside the band
+    if(e.constrained) continue; // an input constraint inside the band
     const Face_handle g = f->neighbor(i);
     f->set_constraint(i, false);
     g->set_constraint(g->index(f), false);
@@ -191,6 +201,54 @@ bool merge_interface_band(const std::vector<const Triangle_soup_2<Point>*>& soup
     if(!band.is_face(t[0], t[1], t[2], f)) return false;
   }
   return true;
+}
+
+// Puts the soup's triangles in an order that depends on their points only
+// (by their points' coordinates, least first), and its points in the order
+// the triangles first meet them; `handles`, when given, is permuted with
+// the triangles. Two processes that hold the same triangles in different
+// orders (a part in memory and the same part streamed) then merge them
+// into the same mesh.
+template <class Point, class Handle>
+void sort_soup(Triangle_soup_2<Point>& soup, std::vector<Handle>* handles = nullptr)
+{
+  const std::size_t n = soup.triangles.size();
+  typedef std::array<std::pair<double, double>, 3> Key;
+  std::vector<Key> keys(n);
+  for(std::size_t t = 0; t < n; ++t) {
+    for(std::size_t k = 0; k < 3; ++k) {
+      const Point& p = soup.points[soup.triangles[t][k]];
+      keys[t][k] = std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    }
+    std::sort(keys[t].begin(), keys[t].end());
+  }
+  std::vector<std::size_t> order(n);
+  for(std::size_t t = 0; t < n; ++t) order[t] = t;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  Triangle_soup_2<Point> sorted;
+  std::vector<std::size_t> new_index(soup.points.size(), std::size_t(-1));
+  std::vector<Handle> sorted_handles;
+  for(std::size_t t : order) {
+    // the triangle's points numbered least first, whatever its rotation
+    std::array<std::size_t, 3> by_key = soup.triangles[t];
+    std::sort(by_key.begin(), by_key.end(), [&](std::size_t a, std::size_t b) {
+      const Point &p = soup.points[a], &q = soup.points[b];
+      return std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y())) <
+             std::make_pair(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+    });
+    for(std::size_t i : by_key)
+      if(new_index[i] == std::size_t(-1)) {
+        new_index[i] = sorted.points.size();
+        sorted.points.push_back(soup.points[i]);
+      }
+    std::array<std::size_t, 3> tri;
+    for(std::size_t k = 0; k < 3; ++k) tri[k] = new_index[soup.triangles[t][k]];
+    sorted.triangles.push_back(tri);
+    sorted.constrained.push_back(soup.constrained[t]);
+    if(handles != nullptr) sorted_handles.push_back((*handles)[t]);
+  }
+  soup = std::move(sorted);
+  if(handles != nullptr) *handles = std::move(sorted_handles);
 }
 
 // The finite faces `f` of `cdt` for which `keep(f)` holds, counter-clockwise,
