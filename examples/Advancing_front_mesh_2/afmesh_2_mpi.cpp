@@ -55,6 +55,7 @@ struct Mpi_options
   afmesh_2::Options opt;
   std::vector<std::string> outputs;
   bool merge = false;
+  bool help = false, version = false; // printed by rank 0 alone
 };
 
 inline bool ends_with(const std::string& s, const std::string& tail) { return afmesh_2::ends_with(s, tail); }
@@ -69,15 +70,12 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   for(std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if(a == "--help" || a == "-h") {
-      std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
-                   "                    (-o OUT.pvtu [--stream] | --merge -o OUT.off|OUT.vtu | --no-output)\n"
-                   "                    [--stats]\n\n"
-                   "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
-                   "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
-                   "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
-                   "scratch files beside the pieces). The input and size options are afmesh_2's\n"
-                   "(afmesh_2 --help).\n";
-      std::exit(0);
+      m.help = true;
+      return m;
+    }
+    if(a == "--version") {
+      m.version = true;
+      return m;
     }
     if(a == "--merge") {
       m.merge = true;
@@ -130,38 +128,68 @@ inline double seconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The file this rank writes for `out`: its piece, or (rank 0) the merged
-// file; empty when it writes none.
-inline std::string file_of(const Mpi_options& m, const std::string& out, int rank)
+// The files this rank writes for `out`: its piece (and, rank 0, the
+// collection), or (rank 0) the merged file.
+inline std::vector<std::string> files_of(const Mpi_options& m, const std::string& out, int rank)
 {
-  if(m.merge) return rank == 0 ? out : std::string();
-  return piece_name(out, rank);
+  std::vector<std::string> files;
+  if(!m.merge) files.push_back(piece_name(out, rank));
+  if(rank == 0) files.push_back(out);
+  return files;
 }
 
 // An output that cannot be written must show before the meshing, on every
-// rank at once: each rank tries a scratch file beside its own, and rank 0
-// names the first that failed. Returns false then.
+// rank at once: each rank tries a probe file beside each of its own (its
+// name taken by no output), and rank 0 names the first that failed.
+// Returns false then.
 inline bool outputs_writable(const Mpi_options& m, int rank, int ranks)
 {
   for(const std::string& out : m.outputs) {
-    const std::string mine = file_of(m, out, rank);
-    bool ok = true;
-    if(!mine.empty()) {
-      const std::string scratch = mine + ".tmp";
-      ok = bool(std::ofstream(scratch.c_str(), std::ios::out | std::ios::binary | std::ios::app));
-      std::remove(scratch.c_str());
+    std::string failed;
+    for(const std::string& mine : files_of(m, out, rank)) {
+      const std::string probe = mine + ".afmesh_2_mpi-probe";
+      const bool ok = bool(std::ofstream(probe.c_str(), std::ios::out | std::ios::binary | std::ios::app));
+      std::remove(probe.c_str());
+      if(!ok && failed.empty()) failed = mine;
     }
-    const std::vector<char> all = gather_to_root<char>(ok ? 1 : 0, ranks);
-    bool every = true;
-    if(rank == 0)
-      for(int r = 0; r < ranks && every; ++r)
-        if(!all[std::size_t(r)]) {
-          std::cerr << "afmesh_2_mpi: error: cannot write " << file_of(m, out, r) << "\n";
-          every = false;
-        }
-    if(!all_ranks(rank != 0 || every)) return false;
+    const std::vector<char> all = gather_to_root<char>(failed.empty() ? 1 : 0, ranks);
+    int first = -1;
+    for(int r = 0; r < ranks && first < 0 && rank == 0; ++r)
+      if(!all[std::size_t(r)]) first = r;
+    // the rank that failed names its file to rank 0
+    int named = first;
+    MPI_Bcast(&named, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if(named < 0) continue;
+    if(named == rank && rank != 0) send_vector(std::vector<char>(failed.begin(), failed.end()), 0, OUTPUT_NAME);
+    if(rank == 0) {
+      const std::vector<char> name = named == 0 ? std::vector<char>(failed.begin(), failed.end())
+                                                : receive_vector<char>(named, OUTPUT_NAME);
+      std::cerr << "afmesh_2_mpi: error: cannot write " << std::string(name.begin(), name.end()) << "\n";
+    }
+    return false;
   }
   return true;
+}
+
+// A 64-bit digest of the decomposition: the ranks must all have made the
+// same (the same input and options on every machine).
+template <class K>
+std::uint64_t digest(const Decomposition<K>& d)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](const void* data, std::size_t n) {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for(std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  mix(&d.parts, sizeof d.parts);
+  mix(&d.plan.axis, sizeof d.plan.axis);
+  for(const auto& c : d.plan.cuts) mix(&c.position, sizeof c.position);
+  for(const auto& points : d.interface_points)
+    for(const auto& p : points) {
+      mix(&p.first, sizeof p.first);
+      mix(&p.second, sizeof p.second);
+    }
+  return h;
 }
 
 // What a rank's share and its interfaces came to.
@@ -189,18 +217,70 @@ inline int run(const Mpi_options& m, int rank, int ranks)
 {
   const auto t_start = std::chrono::steady_clock::now();
   if(!outputs_writable(m, rank, ranks)) return 3;
-  afmesh_2::Input<K> in;
-  afmesh_2::load_input(m.opt, in);
-  Decomposition<K> d = decompose<K>(in, ranks);
+  // every rank reads the input and decomposes the domain: invalid input
+  // stops them all at the same place (rank 0 says why); a rank that fails
+  // alone (a file another machine cannot see) says so itself. A part too
+  // narrow for its interface bands, or parts that do not fit the domain
+  // (as mesh_in_parallel_2() checks its threads' parts), make the ranks
+  // start again with fewer parts.
+  std::unique_ptr<afmesh_2::Input<K> > input;
+  Decomposition<K> d;
+  CDT<K> part_cdt;
+  std::size_t part = 0;
+  std::string fewer_parts_reason;
+  for(std::size_t wanted = std::size_t(ranks);;) {
+    input.reset(new afmesh_2::Input<K>());
+    std::string input_error;
+    try {
+      afmesh_2::load_input(m.opt, *input);
+      d = decompose<K>(*input, int(wanted));
+    } catch(const afmesh_2::Input_error& e) {
+      input_error = e.what();
+    } catch(const std::invalid_argument& e) {
+      input_error = m.opt.input + ": " + e.what();
+    }
+    if(any_rank(!input_error.empty())) {
+      const bool everyone = all_ranks(!input_error.empty());
+      if(!input_error.empty() && (rank == 0 || !everyone))
+        std::cerr << "afmesh_2_mpi: " << (everyone ? std::string() : "rank " + std::to_string(rank) + ": ")
+                  << "error: " << input_error << "\n";
+      return 1;
+    }
+    const std::uint64_t mine = digest(d);
+    std::uint64_t low = 0, high = 0;
+    MPI_Allreduce(&mine, &low, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(&mine, &high, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD);
+    if(low != high) {
+      if(rank == 0)
+        std::cerr << "afmesh_2_mpi: error: the ranks cut the domain differently (do they read the same input "
+                     "with the same options and the same build?)\n";
+      return 3;
+    }
+    const double ratio = narrowest_part_ratio(d, initial_band_sizes);
+    if(d.parts > 2 && ratio < 1) {
+      const std::size_t fewer =
+        (std::max)(std::size_t(2), (std::min)(d.parts - 1, std::size_t(double(d.parts) * ratio)));
+      fewer_parts_reason = std::to_string(d.parts) + " parts: one was narrower than its interface bands";
+      wanted = fewer;
+      continue;
+    }
+    // this rank's part: with one part, rank 0 meshes the input's
+    // triangulation with afmesh_2's serial mesher
+    part = d.parts == 1 ? (rank == 0 ? 0 : 1) : std::size_t(rank);
+    part_cdt.clear();
+    if(d.parts > 1 && part < d.parts) build_part<K>(*input, d, part, part_cdt);
+    if(!parts_fit<K>(*input, d, part, part_cdt, rank, ranks)) {
+      fewer_parts_reason = std::to_string(d.parts) + " parts did not fit the domain";
+      wanted = 1;
+      continue;
+    }
+    break;
+  }
+  afmesh_2::Input<K>& in = *input;
   const double t_decomposition = seconds_since(t_start);
 
   const auto t_mesh = std::chrono::steady_clock::now();
-  // this rank's part: with one part, rank 0 meshes the input's
-  // triangulation with afmesh_2's serial mesher
-  const std::size_t part = d.parts == 1 ? (rank == 0 ? 0 : 1) : std::size_t(rank);
   const bool has_part = part < d.parts;
-  CDT<K> part_cdt;
-  if(d.parts > 1 && has_part) build_part<K>(in, d, part, part_cdt);
   CDT<K>& meshed = d.parts == 1 ? in.cdt : part_cdt;
   std::unique_ptr<Part_stream<K> > stream;
   if(m.opt.stream) stream.reset(new Part_stream<K>(d, part, meshed, piece_name(m.outputs.front(), rank)));
@@ -267,6 +347,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     j["ranks"] = ranks;
     j["parts"] = d.parts;
     if(!d.one_part_reason.empty()) j["one_part_reason"] = d.one_part_reason;
+    if(!fewer_parts_reason.empty()) j["fewer_parts_reason"] = fewer_parts_reason;
     j["axis"] = d.plan.axis;
     std::vector<double> cuts;
     for(const auto& c : d.plan.cuts) cuts.push_back(c.position);
@@ -308,6 +389,19 @@ int main(int argc, char* argv[])
   Mpi_options m;
   try {
     m = parse(std::vector<std::string>(argv + 1, argv + argc));
+    if(m.help && mpi.rank == 0)
+      std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
+                   "                    (-o OUT.pvtu [--stream] | --merge -o OUT.off|OUT.vtu | --no-output)\n"
+                   "                    [--stats]\n\n"
+                   "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
+                   "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
+                   "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
+                   "scratch files beside the pieces). The input and size options are afmesh_2's\n"
+                   "(afmesh_2 --help).\n\n"
+                   "Exit codes: 0 success, 1 invalid input, 2 bad usage, 3 an output that could not\n"
+                   "be written, or an internal error.\n";
+    if(m.version && mpi.rank == 0) afmesh_2::print_version();
+    if(m.help || m.version) return 0;
   } catch(const afmesh_2::Usage_error& e) {
     say(std::string(e.what()) + "\nTry 'afmesh_2_mpi --help'.");
     return 2;

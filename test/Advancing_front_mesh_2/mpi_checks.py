@@ -139,8 +139,10 @@ for n in (1, 2, 4):
     stats = json.loads(mpi(n, "square.poly", "--size", "0.005", "--merge", "-o", "mpi.off", "--stats").stdout)
     valid("square.poly", "mpi.off", label)
     check(stats["parts"] == n, "%s: %d parts" % (label, stats["parts"]))
-    check(sum(r["triangles"] for r in stats["per_rank"]) == stats["number_of_faces"],
-          "%s: the ranks' triangles do not add up" % label)
+    m_points, m_triangles = read_off("mpi.off")
+    check(sum(r["triangles"] for r in stats["per_rank"]) == len(m_triangles) and
+          sum(r["owned_vertices"] for r in stats["per_rank"]) == len(m_points),
+          "%s: the ranks' triangles and vertices do not add up to the merged mesh's" % label)
     # --stream: each part streamed to scratch files, the triangles near the
     # cuts held back for the merge; the same mesh but for the seams (the
     # frontal mesher of a part streamed may close the front near a cut
@@ -198,6 +200,27 @@ if pieces is not None:
     write_off("from_pieces.off", points, triangles)
     valid("airfoil.poly", "from_pieces.off", "airfoil pieces")
 
+# the same pieces in ASCII (--vtu-ascii): the same mesh
+mpi(3, "airfoil.poly", "--size", "0.02", "--vtu-ascii", "-o", "pieces/ascii.pvtu")
+ascii_pieces = read_pieces("pieces/ascii.pvtu", 3)
+if pieces is not None and ascii_pieces is not None:
+    check(triangle_set(*ascii_pieces) == triangle_set(*pieces), "the ASCII pieces are not the binary pieces' mesh")
+
+# the input's free points near a cut are vertices of the mesh where the
+# input puts them: the seam smoothing leaves them
+free = [(x, y) for x in (0.47, 0.49, 0.51, 0.53) for y in (0.2, 0.4, 0.6, 0.8)]
+with open("free.poly", "w") as f:
+    corners = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    f.write("%d 2 0 0\n" % (4 + len(free)))
+    f.writelines("%d %r %r\n" % (i + 1, x, y) for i, (x, y) in enumerate(corners + free))
+    f.write("4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
+mpi(2, "free.poly", "--size", "0.02", "--merge", "-o", "free.off")
+valid("free.poly", "free.off", "free points, 2 ranks")
+f_points, _ = read_off("free.off")
+at = {tuple(p) for p in f_points}
+moved = [p for p in free if p not in at]
+check(not moved, "free points near the cut moved: %s" % moved)
+
 # fewer parts than ranks: a domain too small for 3 parts of 2,000 triangles
 run(make_input, "square-with-hole", "small.poly", "0.05")
 stats = json.loads(mpi(3, "small.poly", "--size", "0.05", "--merge", "-o", "small.off", "--stats").stdout)
@@ -220,6 +243,20 @@ if lake and os.path.exists(lake):
         f.writelines("%.17g %.17g 0\n" % (x, y) for x, y in m.points[:, :2])
         f.writelines("3 %d %d %d\n" % tuple(t) for t in m.cells_dict["triangle"])
     valid("lake.poly", "lake.off", "lake, 2 ranks")
+
+# more ranks than the domain has room for strips wider than their bands:
+# fewer parts, the ranks beyond them mesh nothing
+run(make_input, "square-with-hole", "narrow.poly", "0.01")
+stats = json.loads(mpi(6, "narrow.poly", "--size", "0.01", "--merge", "-o", "narrow.off", "--stats").stdout)
+valid("narrow.poly", "narrow.off", "narrow strips, 6 ranks")
+check(1 < stats["parts"] < 6 and "narrower than its interface bands" in stats.get("fewer_parts_reason", ""),
+      "narrow strips: %d parts, %s" % (stats["parts"], stats.get("fewer_parts_reason")))
+
+# --help and --version: printed once, exit 0
+r = mpi(2, "--help")
+check(r.stdout.count("Usage: mpirun") == 1, "--help: " + r.stdout)
+r = mpi(2, "--version")
+check(len(r.stdout.strip().splitlines()) == 1, "--version: " + r.stdout)
 
 # bad usage and invalid input: afmesh_2's codes, one message (rank 0's)
 r = mpi(2, "square.poly", "--size", "0.01", "--smooth", "3", "-o", "x.pvtu", code=2)

@@ -67,12 +67,12 @@ Band<K> band_near_cut(const CDT<K>& part_cdt, const Decomposition<K>& d, std::si
   return band;
 }
 
-// A soup as one message: the points as doubles, the triangles, the flags.
+// A soup as one message: the points as doubles, the triangles (and the
+// flags, sent as they are).
 struct Soup_message
 {
   std::vector<double> xy;
   std::vector<std::uint64_t> triangles;
-  std::vector<unsigned char> constrained;
 };
 
 // Sends `soup` to rank `to`; returns the bytes sent.
@@ -149,6 +149,13 @@ void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, i
   bool lower_pending = w.has_lower, upper_pending = w.has_upper;
   if(w.has_lower) w.lower_width = initial_band_sizes * d.interface_size[r - 1];
   if(w.has_upper) w.upper_width = initial_band_sizes * d.interface_size[r];
+  // the input's free points near the cut are mesh vertices that must not
+  // move (as in mesh_in_parallel_2(); the input's other vertices are on
+  // constrained edges, which the smoothing leaves)
+  std::set<std::pair<double, double> > input_points;
+  if(w.has_upper)
+    for(std::size_t p : {r, r + 1})
+      for(const Point& q : d.free_points[p]) input_points.insert(key_of(q));
   std::string failure;
   while(any_rank(lower_pending || upper_pending)) {
     if(lower_pending) {
@@ -163,7 +170,8 @@ void merge_interfaces(const afmesh_2::Input<K>& in, const Decomposition<K>& d, i
       auto in_seam = [&](const Point& p) {
         const double a = AFM::internal::coordinate(CGAL::to_double(p.x()), CGAL::to_double(p.y()), d.plan.axis);
         const double dist = std::abs(a - position);
-        return dist <= 2 * seam_width * interface_size && dist <= seam_width * CGAL::to_double(in.sizing(p));
+        return dist <= 2 * seam_width * interface_size && dist <= seam_width * CGAL::to_double(in.sizing(p)) &&
+               input_points.count(key_of(p)) == 0;
       };
       w.merged.clear();
       const std::vector<const AFM::internal::Triangle_soup_2<Point>*> soups{&w.kept_band.soup, &above};

@@ -32,7 +32,7 @@ struct Mpi_session
 };
 
 // The message tags of the tool's exchanges.
-enum Tag : int { BAND = 1, BAND_VERDICT, BAND_IDS, MERGED_POINTS, MERGED_TRIANGLES };
+enum Tag : int { BAND = 1, BAND_VERDICT, BAND_IDS, MERGED_POINTS, MERGED_TRIANGLES, OUTPUT_NAME, FIT };
 
 // Values are sent as bytes in chunks of at most 1 GiB.
 constexpr std::size_t chunk_bytes = std::size_t(1) << 30;
@@ -82,13 +82,6 @@ inline std::uint64_t sum_over_ranks(std::uint64_t mine)
 {
   std::uint64_t out = 0;
   MPI_Allreduce(&mine, &out, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
-  return out;
-}
-
-inline double max_over_ranks(double mine)
-{
-  double out = 0;
-  MPI_Allreduce(&mine, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   return out;
 }
 

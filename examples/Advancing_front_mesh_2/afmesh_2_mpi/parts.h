@@ -13,10 +13,13 @@
 #define AFMESH_2_MPI_PARTS_H
 
 #include "../afmesh_2/meshing.h"
+#include "channel.h"
 
 #include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
 #include <CGAL/Advancing_front_mesh_2/mesh_in_parallel_2.h>
 
+#include <algorithm>
+#include <array>
 #include <set>
 #include <string>
 #include <utility>
@@ -94,6 +97,110 @@ Decomposition<K> decompose(afmesh_2::Input<K>& in, int ranks)
     d.interface_size.push_back(size);
   }
   return d;
+}
+
+// The narrowest part against the width its interface bands need (8
+// interface sizes on each side, bands.h, and a triangle's reach beyond):
+// their ratio, 1 or more when every part is wide enough.
+template <class K>
+double narrowest_part_ratio(const Decomposition<K>& d, double band_sizes)
+{
+  double ratio = 1e300;
+  for(std::size_t r = 1; r + 1 < d.parts; ++r) {
+    const double width = d.plan.cuts[r].position - d.plan.cuts[r - 1].position;
+    const double s = d.interface_size[r - 1], t = d.interface_size[r];
+    ratio = (std::min)(ratio, width / (band_sizes * (s + t) + 3 * (std::max)(s, t)));
+  }
+  return ratio;
+}
+
+// A point pair as a key: a directed edge.
+typedef std::array<double, 4> Edge_key;
+template <class Point>
+Edge_key edge_key(const Point& a, const Point& b)
+{
+  return {{CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(b.x()), CGAL::to_double(b.y())}};
+}
+
+// Whether the parts fit the domain, as mesh_in_parallel_2()'s parts_fit()
+// asks of the threads' parts, but on the parts' inputs before meshing (the
+// meshing keeps each part's domain) and across the ranks: the open edges
+// of each part's domain (directed, the domain on their left) lie on the
+// domain's boundary or on an interface, the rank on the other side of an
+// interface has the same edges the other way, the parts together have the
+// domain's whole boundary, and each part holds its free points. Collective:
+// every rank calls it with its part (none: `part_cdt` empty).
+template <class K>
+bool parts_fit(const afmesh_2::Input<K>& in, const Decomposition<K>& d, std::size_t part, const CDT<K>& part_cdt,
+               int rank, int ranks)
+{
+  typedef CDT<K> Cdt;
+  if(d.parts == 1) return true;
+  // the domain's boundary, directed, and each cut's interface edges
+  std::set<Edge_key> outside;
+  for(auto f = in.cdt.finite_faces_begin(); f != in.cdt.finite_faces_end(); ++f) {
+    if(!f->is_in_domain()) continue;
+    for(int k = 0; k < 3; ++k) {
+      const auto g = f->neighbor(k);
+      if(in.cdt.is_infinite(g) || !g->is_in_domain())
+        outside.insert(edge_key(f->vertex(Cdt::ccw(k))->point(), f->vertex(Cdt::cw(k))->point()));
+    }
+  }
+  std::vector<std::set<Edge_key> > on_cut(d.parts > 0 ? d.parts - 1 : 0);
+  bool fits = true;
+  std::uint64_t boundary_edges = 0;
+  if(part < d.parts && part_cdt.dimension() == 2) {
+    for(auto f = part_cdt.finite_faces_begin(); f != part_cdt.finite_faces_end(); ++f) {
+      if(!f->is_in_domain()) continue;
+      for(int k = 0; k < 3; ++k) {
+        const auto g = f->neighbor(k);
+        if(!part_cdt.is_infinite(g) && g->is_in_domain()) continue;
+        const auto& a = f->vertex(Cdt::ccw(k))->point();
+        const auto& b = f->vertex(Cdt::cw(k))->point();
+        if(outside.count(edge_key(a, b)) > 0) {
+          ++boundary_edges;
+          continue;
+        }
+        bool found = false;
+        for(std::size_t c : {part - 1, part})
+          if(c < on_cut.size() && d.interface_points[c].count(key_of(a)) > 0 &&
+             d.interface_points[c].count(key_of(b)) > 0) {
+            on_cut[c].insert(edge_key(a, b));
+            found = true;
+            break;
+          }
+        fits = fits && found; // the part's domain ends inside the domain
+      }
+    }
+    for(const auto& p : d.free_points[part]) {
+      typename Cdt::Locate_type lt;
+      int li = 0;
+      const auto f = part_cdt.locate(p, lt, li);
+      bool held = false;
+      if(lt == Cdt::VERTEX) {
+        auto fc = part_cdt.incident_faces(f->vertex(li)), done = fc;
+        do {
+          held = held || (!part_cdt.is_infinite(fc) && fc->is_in_domain());
+        } while(++fc != done);
+      }
+      fits = fits && held;
+    }
+  }
+  // the interface above, reversed, must be the rank above's interface below
+  if(part < d.parts && part + 1 < d.parts) {
+    std::vector<double> mine;
+    for(const Edge_key& e : on_cut[part]) mine.insert(mine.end(), {e[2], e[3], e[0], e[1]});
+    send_vector(mine, rank + 1, FIT);
+  }
+  if(part < d.parts && part >= 1 && part - 1 < on_cut.size()) {
+    const std::vector<double> below = receive_vector<double>(rank - 1, FIT);
+    std::set<Edge_key> theirs;
+    for(std::size_t i = 0; i + 3 < below.size(); i += 4) theirs.insert({{below[i], below[i + 1], below[i + 2], below[i + 3]}});
+    fits = fits && theirs == on_cut[part - 1];
+  }
+  (void)ranks;
+  const bool whole_boundary = sum_over_ranks(boundary_edges) == outside.size();
+  return all_ranks(fits) && whole_boundary;
 }
 
 template <class K>

@@ -234,14 +234,15 @@ void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64
     flush();
   }});
   Stream_out out{os};
-  vtu::vtu_write(out, nv, nt, arrays, binary);
+  // ParaView takes the global numbers for what they are when told
+  vtu::vtu_write(out, nv, nt, arrays, binary,
+                 {global_ids ? std::string(" GlobalIds=\"GlobalNodeId\"") : std::string(), std::string()});
 }
 
 inline void append_points(std::ostream& os, std::string& raw, bool binary,
-                          const std::vector<std::array<double, 2> >& points, const std::vector<char>* only)
+                          const std::vector<std::array<double, 2> >& points)
 {
   for(std::size_t i = 0; i < points.size(); ++i) {
-    if(only != nullptr && !(*only)[i]) continue;
     if(binary) {
       vtu::vtu_append_raw(raw, points[i][0]);
       vtu::vtu_append_raw(raw, points[i][1]);
@@ -271,7 +272,7 @@ inline void write_collection(const std::string& pvtu, const std::vector<std::uin
   os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\""
      << (vtu::vtu_host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
      << "<PUnstructuredGrid GhostLevel=\"0\">\n"
-     << "<PPointData><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/></PPointData>\n"
+     << "<PPointData GlobalIds=\"GlobalNodeId\"><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/></PPointData>\n"
      << "<PCellData><PDataArray type=\"Int32\" Name=\"partition\"/></PCellData>\n"
      << "<PPoints><PDataArray type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
   for(int r = 0; r < ranks; ++r)
@@ -293,7 +294,7 @@ inline void write_piece(const std::string& pvtu, const Rank_mesh& m, int rank, i
     std::ofstream os(name, std::ios::binary);
     os << std::setprecision(17);
     write_vtu(os, m.points.size(), {m.triangles.size()}, rank, binary,
-              [&](std::string& raw) { append_points(os, raw, binary, m.points, nullptr); },
+              [&](std::string& raw) { append_points(os, raw, binary, m.points); },
               [&](std::string& raw, bool wide) {
                 for(const auto& t : m.triangles)
                   for(int k = 0; k < 3; ++k) put_index(os, raw, binary, wide, t[std::size_t(k)], k == 2 ? '\n' : ' ');

@@ -55,10 +55,13 @@ inline bool vtu_host_is_little_endian()
   return first == 1;
 }
 
-// Writes the file to `out`, which has put(const char*, std::size_t).
+// Writes the file to `out`, which has put(const char*, std::size_t). The
+// PointData and CellData elements get the attributes `data_attributes`
+// (by default the markers are their scalars).
 template <class Out>
 void vtu_write(Out& out, std::uint64_t n_points, std::uint64_t n_cells, const std::vector<Vtu_array>& arrays,
-               bool binary)
+               bool binary,
+               const std::vector<std::string>& data_attributes = {" Scalars=\"marker\"", " Scalars=\"marker\""})
 {
   auto put = [&out](const std::string& s) { out.put(s.data(), s.size()); };
   put(std::string("<?xml version=\"1.0\"?>\n"
@@ -80,7 +83,7 @@ void vtu_write(Out& out, std::uint64_t n_points, std::uint64_t n_cells, const st
       const Vtu_array& a = arrays[i];
       if(static_cast<int>(a.section) != s) continue;
       if(!opened) {
-        put(std::string("<") + names[s] + (s >= 2 ? " Scalars=\"marker\">\n" : ">\n"));
+        put(std::string("<") + names[s] + (s >= 2 ? data_attributes.at(std::size_t(s - 2)) : std::string()) + ">\n");
         opened = true;
       }
       if(binary) {
