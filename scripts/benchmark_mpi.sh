@@ -10,11 +10,12 @@
 #   mesh (--merge -o .off), the whole run's time writing the pieces
 #   (-o .pvtu), the largest peak memory of a rank, the interface figures;
 # - weak scaling: the square with about 1e6 triangles per rank on 1, 2
-#   and 4 ranks;
+#   and 4 ranks, and with about 5e6 per rank on 1 and 2, in memory and
+#   streamed (--stream);
 # - strong scaling: the square at about 4e6 triangles on 1, 2, 4 and 8 ranks.
 # Times are the fastest of AFM_BENCH_RUNS (default 3) whole runs of mpirun,
-# from GNU time; the scaling runs write nothing (--no-output). About 6
-# minutes on 2 cores once built.
+# from GNU time; the scaling runs write nothing (--no-output) but the
+# streamed ones. About 10 minutes on 2 cores once built.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh time libopenmpi-dev openmpi-bin python3-numpy
@@ -73,12 +74,15 @@ EOF
 
 json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 
-# one scaling run on $1 ranks of $2 at size $3, writing nothing: sets t (its
-# seconds), tri, and of the ranks the largest meshing and interface seconds
-# (mesh, inter) and peak memory (peak)
+# one scaling run on $1 ranks of $2 at size $3, writing nothing (or as the
+# further arguments say): sets t (its seconds), tri, and of the ranks the
+# largest meshing and interface seconds (mesh, inter) and peak memory (peak)
 scaling_run() {
-  t=$(fastest "${launcher[@]}" -np "$1" build/release/examples/Advancing_front_mesh_2/afmesh_2_mpi "$2" --size "$3" \
-    --no-output --stats)
+  local n=$1 poly=$2 h=$3
+  shift 3
+  [ $# -gt 0 ] || set -- --no-output
+  t=$(fastest "${launcher[@]}" -np "$n" build/release/examples/Advancing_front_mesh_2/afmesh_2_mpi "$poly" --size "$h" \
+    "$@" --stats)
   tri=$(json "$work/run.out" "d['number_of_faces']")
   mesh=$(json "$work/run.out" "'%.2f' % max(r['meshing_time'] for r in d['per_rank'])")
   inter=$(json "$work/run.out" "'%.2f' % max(r['interface_time'] for r in d['per_rank'])")
@@ -135,24 +139,36 @@ for c in "${cases[@]}"; do
   done
 done
 
-{
-  echo
-  echo "## Weak scaling: about 1e6 triangles per rank (square with a hole, no output)"
-  echo
-  echo "Efficiency: the 1-rank time over the N-rank time, times N over the cores the N ranks have (min(N, $(nproc)))."
-  echo
-  echo "| ranks | h | triangles | seconds | per rank: largest meshing s | largest interface s | efficiency |"
-  echo "|--:|--:|--:|--:|--:|--:|--:|"
-} >> "$out"
-t1=""
-for n in 1 2 4; do
-  h=$(python3 -c "print('%.7g' % (0.001367 / $n ** 0.5))")
-  "$B/afm_make_input" square-with-hole "$work/weak.poly" "$h" > /dev/null
-  scaling_run "$n" "$work/weak.poly" "$h"
-  [ -n "$t1" ] || t1=$t
-  eff=$(python3 -c "import os; print('%.0f%%' % (100 * $t1 / $t * $n / min($n, os.cpu_count())))")
-  echo "| $n | $h | $tri | $t | $mesh | $inter | $eff |" >> "$out"
-done
+# weak scaling: $1 the title, $2 the size on one rank (about 1e6 or 5e6
+# triangles), $3 the rank counts, the rest afmesh_2_mpi's output arguments
+weak_scaling() {
+  local title=$1 h1=$2 counts=$3
+  shift 3
+  {
+    echo
+    echo "## Weak scaling: $title"
+    echo
+    echo "Efficiency: the 1-rank time over the N-rank time, times N over the cores the N ranks have (min(N, $(nproc)))."
+    echo
+    echo "| ranks | h | triangles | seconds | per rank: largest meshing s | largest interface s | largest peak MB | efficiency |"
+    echo "|--:|--:|--:|--:|--:|--:|--:|--:|"
+  } >> "$out"
+  local t1="" n h eff
+  for n in $counts; do
+    h=$(python3 -c "print('%.7g' % ($h1 / $n ** 0.5))")
+    "$B/afm_make_input" square-with-hole "$work/weak.poly" "$h" > /dev/null
+    rm -f "$work"/weak_*.vtu
+    scaling_run "$n" "$work/weak.poly" "$h" "$@"
+    [ -n "$t1" ] || t1=$t
+    eff=$(python3 -c "import os; print('%.0f%%' % (100 * $t1 / $t * $n / min($n, os.cpu_count())))")
+    echo "| $n | $h | $tri | $t | $mesh | $inter | $peak | $eff |" >> "$out"
+  done
+  rm -f "$work"/weak_*.vtu
+}
+weak_scaling "about 1e6 triangles per rank (square with a hole, no output)" 0.001367 "1 2 4"
+weak_scaling "about 5e6 triangles per rank (square with a hole, no output)" 0.000611 "1 2"
+weak_scaling "about 5e6 triangles per rank, each part streamed (\`--stream\`, binary pieces)" 0.000611 "1 2" \
+  --stream -o "$work/weak.pvtu"
 
 {
   echo

@@ -56,6 +56,10 @@ struct Mpi_options
   std::vector<std::string> outputs;
   bool merge = false;
   bool help = false, version = false; // printed by rank 0 alone
+  // --stream: each rank keeps its part once meshed, until the run ends;
+  // --stop-after-meshing stops there, --resume takes the kept parts
+  bool stop_after_meshing = false, resume = false;
+  std::uint64_t arguments_digest = 0; // of the arguments that make the parts
 };
 
 inline bool ends_with(const std::string& s, const std::string& tail) { return afmesh_2::ends_with(s, tail); }
@@ -65,10 +69,15 @@ inline bool ends_with(const std::string& s, const std::string& tail) { return af
 inline Mpi_options parse(const std::vector<std::string>& args)
 {
   Mpi_options m;
+  m.arguments_digest = 1469598103934665603ull;
   std::vector<std::string> rest;
   bool no_output = false, threads = false, stream = false;
   for(std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
+    // the options that make the parts (not those that only say what to
+    // print or how to write it, which a resumed run may change)
+    if(a != "--stop-after-meshing" && a != "--resume" && a != "--stats" && a != "--vtu-ascii")
+      for(unsigned char c : a + '\0') m.arguments_digest = (m.arguments_digest ^ c) * 1099511628211ull;
     if(a == "--help" || a == "-h") {
       m.help = true;
       return m;
@@ -81,6 +90,12 @@ inline Mpi_options parse(const std::vector<std::string>& args)
       m.merge = true;
     } else if(a == "--stream") {
       stream = true; // afmesh_2's parser would want its own -o
+    } else if(a == "--stop-after-meshing") {
+      m.stop_after_meshing = true;
+      continue;
+    } else if(a == "--resume") {
+      m.resume = true; // not afmesh_2's --resume FILE: the parts are beside the pieces
+      continue;
     } else if(a == "-o" || a == "--output") {
       if(i + 1 == args.size()) throw afmesh_2::Usage_error("the option '" + a + "' requires an argument");
       m.outputs.push_back(args[++i]);
@@ -114,6 +129,9 @@ inline Mpi_options parse(const std::vector<std::string>& args)
     throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
   if(o.stream && (m.merge || m.outputs.empty()))
     throw afmesh_2::Usage_error("--stream writes pieces: give -o OUT.pvtu (without --merge)");
+  if((m.stop_after_meshing || m.resume) && !o.stream)
+    throw afmesh_2::Usage_error(std::string(m.resume ? "--resume" : "--stop-after-meshing") +
+                                " keeps the parts of a streamed run: add --stream");
   for(const std::string& out : m.outputs) {
     if(m.merge && !ends_with(out, ".off") && !ends_with(out, ".vtu"))
       throw afmesh_2::Usage_error("--merge writes .off or .vtu, not '" + out + "'");
@@ -289,14 +307,38 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   // from here on a rank may fail alone: what it throws must not pass for
   // invalid input (which every rank would see), but end every rank
   // (main()'s MPI_Abort), or its neighbours would wait for it forever
+  // --stream: a part kept by a previous run of the same command is taken
+  // as it is (--resume); a part meshed is kept until the run ends, so that
+  // a run that fails after it can be resumed without meshing it again
+  const std::string kept_part = stream ? piece_name(m.outputs.front(), rank) + ".part" : std::string();
+  const std::uint64_t run_digest = digest(d) ^ m.arguments_digest;
+  bool resumed = false;
+  if(stream && has_part && m.resume) resumed = stream->resume(kept_part, run_digest);
+  if(stream && has_part && !resumed) std::remove(kept_part.c_str());
   try {
-    if(has_part && d.parts == 1) rc = mesh_whole<K>(m.opt, in, stream.get(), st);
-    else if(has_part) rc = mesh_part<K>(m.opt, in, part_cdt, stream.get(), st);
+    if(resumed) {
+      st.number_of_faces = stream->streamed_triangles() + stream->held().size();
+    } else if(has_part && d.parts == 1) {
+      rc = mesh_whole<K>(m.opt, in, stream.get(), st);
+    } else if(has_part) {
+      rc = mesh_part<K>(m.opt, in, part_cdt, stream.get(), st);
+    }
   } catch(const std::invalid_argument& e) {
     throw std::runtime_error(std::string("meshing the part: ") + e.what());
   }
-  if(stream) stream->close();
+  if(stream && has_part && !resumed) {
+    stream->close();
+    stream->keep(kept_part, run_digest);
+  }
   const double t_meshing = seconds_since(t_mesh);
+  const std::uint64_t parts_resumed = sum_over_ranks(resumed ? 1 : 0);
+  if(m.stop_after_meshing) {
+    if(rank == 0)
+      std::cerr << "afmesh_2_mpi: note: the parts are meshed and kept beside the pieces (" << parts_resumed
+                << " taken from the previous run); the same command with --resume instead of "
+                   "--stop-after-meshing merges them and writes the pieces\n";
+    return 0;
+  }
   if(sum_over_ranks(st.number_of_faces) == 0)
     throw afmesh_2::Input_error(m.opt.input +
                                 ": nothing to mesh: no bounded region is left once the holes are removed");
@@ -314,6 +356,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     const auto t_write = std::chrono::steady_clock::now();
     for(const std::string& out : m.outputs) write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
     t_writing = seconds_since(t_write);
+    // every piece is written: the kept parts go
+    if(all_ranks(true) && has_part) stream->discard(kept_part);
     share = share_figures(w, mesh.triangle_count(), mesh.owned.total());
     share.held_triangles = stream->held().size();
   } else {
@@ -339,7 +383,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     double meshing, interfaces, writing, peak_memory_mb;
     Share_figures share;
     int code;
-  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc)};
+    bool resumed;
+  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc), resumed};
   const std::vector<Figures> all = gather_to_root(mine, ranks);
   if(rank == 0 && m.opt.stats) {
     nlohmann::ordered_json j;
@@ -365,7 +410,10 @@ inline int run(const Mpi_options& m, int rank, int ranks)
                           {"interface_flips", s.flips}, {"seam_vertices", s.seam_vertices},
                           {"band_widenings", s.widenings}, {"band_bytes_sent", s.band_bytes_sent},
                           {"peak_memory_mb", f.peak_memory_mb}, {"return_code", f.code}});
-      if(m.opt.stream) per_rank.back()["held_triangles"] = s.held_triangles;
+      if(m.opt.stream) {
+        per_rank.back()["held_triangles"] = s.held_triangles;
+        per_rank.back()["resumed_part"] = f.resumed;
+      }
     }
     j["number_of_faces"] = triangles;
     j["number_of_vertices"] = vertices;
@@ -396,8 +444,10 @@ int main(int argc, char* argv[])
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
                    "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
-                   "scratch files beside the pieces). The input and size options are afmesh_2's\n"
-                   "(afmesh_2 --help).\n\n"
+                   "scratch files beside the pieces). A streamed rank keeps its part, once meshed,\n"
+                   "until the pieces are written: --stop-after-meshing stops there, and the same\n"
+                   "command with --resume (after a stop or a failure) meshes only the parts not kept.\n"
+                   "The input and size options are afmesh_2's (afmesh_2 --help).\n\n"
                    "Exit codes: 0 success, 1 invalid input, 2 bad usage, 3 an output that could not\n"
                    "be written, or an internal error.\n";
     if(m.version && mpi.rank == 0) afmesh_2::print_version();

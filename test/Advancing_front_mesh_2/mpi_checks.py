@@ -221,6 +221,28 @@ at = {tuple(p) for p in f_points}
 moved = [p for p in free if p not in at]
 check(not moved, "free points near the cut moved: %s" % moved)
 
+# a streamed rank keeps its part once meshed: --stop-after-meshing stops
+# there; --resume meshes only the parts not kept (rank 1's, deleted here)
+# and gives the uninterrupted run's pieces, byte for byte
+os.makedirs("kept", exist_ok=True)
+mpi(2, "square.poly", "--size", "0.005", "--stream", "-o", "kept/full.pvtu")
+mpi(2, "square.poly", "--size", "0.005", "--stream", "--stop-after-meshing", "-o", "kept/s.pvtu")
+kept = sorted(os.listdir("kept"))
+check("s_0.vtu.part" in kept and "s_1.vtu.part" in kept and "s_0.vtu" not in kept and "s.pvtu" not in kept,
+      "--stop-after-meshing: %s" % kept)
+os.remove("kept/s_1.vtu.part")
+stats = json.loads(mpi(2, "square.poly", "--size", "0.005", "--stream", "--resume", "-o", "kept/s.pvtu",
+                       "--stats").stdout)
+check([r["resumed_part"] for r in stats["per_rank"]] == [True, False],
+      "--resume: parts taken %s" % [r["resumed_part"] for r in stats["per_rank"]])
+for rank in range(2):
+    same = open("kept/s_%d.vtu" % rank, "rb").read() == open("kept/full_%d.vtu" % rank, "rb").read()
+    check(same, "--resume: piece %d is not the uninterrupted run's" % rank)
+left = [f for f in os.listdir("kept") if f.endswith(".part") or f.endswith(".tmp")]
+check(not left, "files left after a complete run: %s" % left)
+r = mpi(2, "square.poly", "--size", "0.005", "--resume", "-o", "kept/m.pvtu", code=2)
+check("add --stream" in r.stderr, "--resume without --stream: " + r.stderr)
+
 # fewer parts than ranks: a domain too small for 3 parts of 2,000 triangles
 run(make_input, "square-with-hole", "small.poly", "0.05")
 stats = json.loads(mpi(3, "small.poly", "--size", "0.05", "--merge", "-o", "small.off", "--stats").stdout)

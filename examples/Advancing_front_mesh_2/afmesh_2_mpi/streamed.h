@@ -26,6 +26,8 @@
 #include <bitset>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <iterator>
 #include <fstream>
 #include <set>
 #include <stdexcept>
@@ -41,6 +43,12 @@ class Counted_bits
 {
 public:
   std::uint64_t size() const { return size_; }
+  const std::vector<std::uint64_t>& words() const { return words_; }
+  void assign(std::uint64_t n, std::vector<std::uint64_t> words)
+  {
+    words_ = std::move(words);
+    size_ = n;
+  }
   void resize(std::uint64_t n)
   {
     words_.resize(std::size_t((n + 63) / 64), 0);
@@ -87,7 +95,20 @@ public:
   ~Scratch_file()
   {
     if(os_.is_open()) os_.close();
-    if(opened_) std::remove(name_.c_str());
+    if(opened_ && !kept_) std::remove(name_.c_str());
+  }
+  // left on disk at the end (a part kept for --resume)
+  void keep(bool on = true) { kept_ = on; }
+  // the bytes written so far
+  std::uint64_t size() const { return written_; }
+  // takes over the file a previous run left, which must have `bytes`
+  bool adopt(std::uint64_t bytes)
+  {
+    std::ifstream is(name_.c_str(), std::ios::in | std::ios::binary | std::ios::ate);
+    if(!is || std::uint64_t(is.tellg()) != bytes) return false;
+    opened_ = true;
+    written_ = bytes;
+    return true;
   }
   Scratch_file(const Scratch_file&) = delete;
   Scratch_file& operator=(const Scratch_file&) = delete;
@@ -100,6 +121,7 @@ public:
       opened_ = true;
     }
     buffer_.append(reinterpret_cast<const char*>(values), n * sizeof(T));
+    written_ += n * sizeof(T);
     if(buffer_.size() >= (std::size_t(1) << 22)) flush();
   }
   // everything put so far on disk; throws std::runtime_error when it is not
@@ -134,8 +156,12 @@ private:
   }
   std::string name_, buffer_;
   std::ofstream os_;
-  bool opened_ = false;
+  bool opened_ = false, kept_ = false;
+  std::uint64_t written_ = 0;
 };
+
+// The first bytes of a kept part's file.
+constexpr const char* part_file_magic = "afmesh_2_mpi kept part 1\n";
 
 // The triangles held back near the cuts start at this many interface sizes
 // from the cut: the largest band the merge may try (bands.h).
@@ -253,6 +279,85 @@ public:
     return ids;
   }
 
+  // The part kept for a later run (--stop-after-meshing, or a run that
+  // fails after this rank meshed): the scratch files stay, and `file` gets
+  // the rest (written whole, then renamed, so that it is either complete or
+  // absent), with the digest `run` of the run's decomposition and options.
+  void keep(const std::string& file, std::uint64_t run)
+  {
+    points_.keep();
+    triangles_.keep();
+    std::string b = part_file_magic;
+    auto put = [&b](const void* data, std::size_t n) { b.append(static_cast<const char*>(data), n); };
+    const std::uint64_t head[6] = {run, used_.size(), streamed_, points_.size(), triangles_.size(), held_.size()};
+    put(head, sizeof head);
+    put(used_.words().data(), used_.words().size() * 8);
+    for(const Held& h : held_) {
+      put(h.v.data(), 24);
+      for(const Point& p : h.p) {
+        const double xy[2] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+        put(xy, 16);
+      }
+      put(&h.constraint_edges, 1);
+    }
+    const std::uint64_t sum = checksum(b);
+    put(&sum, 8);
+    const std::string tmp = file + ".tmp";
+    std::ofstream os(tmp.c_str(), std::ios::out | std::ios::binary | std::ios::trunc);
+    os.write(b.data(), static_cast<std::streamsize>(b.size()));
+    os.close();
+    if(os.fail() || std::rename(tmp.c_str(), file.c_str()) != 0) throw std::runtime_error("cannot write " + file);
+  }
+
+  // Takes the part a previous run kept in `file` (and its scratch files)
+  // when that run had the digest `run`; false when there is none, or it is
+  // not whole, or it is another run's.
+  bool resume(const std::string& file, std::uint64_t run)
+  {
+    std::ifstream is(file.c_str(), std::ios::in | std::ios::binary);
+    if(!is) return false;
+    const std::string b((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
+    const std::size_t magic = std::strlen(part_file_magic);
+    if(b.size() < magic + 56 || b.compare(0, magic, part_file_magic) != 0) return false;
+    std::uint64_t sum = 0;
+    std::memcpy(&sum, b.data() + b.size() - 8, 8);
+    if(sum != checksum(b.substr(0, b.size() - 8))) return false;
+    std::size_t at = magic;
+    auto get = [&](void* data, std::size_t n) {
+      if(at + n > b.size() - 8) throw std::runtime_error(file + ": damaged");
+      std::memcpy(data, b.data() + at, n);
+      at += n;
+    };
+    std::uint64_t head[6];
+    get(head, sizeof head);
+    if(head[0] != run || !points_.adopt(head[3]) || !triangles_.adopt(head[4])) return false;
+    std::vector<std::uint64_t> words(std::size_t((head[1] + 63) / 64));
+    get(words.data(), words.size() * 8);
+    used_.assign(head[1], std::move(words));
+    streamed_ = head[2];
+    held_.clear();
+    for(std::uint64_t t = 0; t < head[5]; ++t) {
+      Held h;
+      get(h.v.data(), 24);
+      for(Point& p : h.p) {
+        double xy[2];
+        get(xy, 16);
+        p = Point(xy[0], xy[1]);
+      }
+      get(&h.constraint_edges, 1);
+      held_.push_back(h);
+    }
+    return at == b.size() - 8;
+  }
+
+  // the kept part removed, and the scratch files with the sink
+  void discard(const std::string& file)
+  {
+    std::remove(file.c_str());
+    points_.keep(false);
+    triangles_.keep(false);
+  }
+
   const std::vector<Held>& held() const { return held_; }
   Counted_bits& used() { return used_; }
   std::uint64_t vertices() const { return used_.size(); }
@@ -276,6 +381,13 @@ private:
     std::pair<double, double> a = key_of(p), b = key_of(q);
     if(b < a) std::swap(a, b);
     return {{a.first, a.second, b.first, b.second}};
+  }
+
+  static std::uint64_t checksum(const std::string& b)
+  {
+    std::uint64_t h = 1469598103934665603ull;
+    for(unsigned char c : b) h = (h ^ c) * 1099511628211ull;
+    return h;
   }
 
   const Decomposition<K>& d_;
