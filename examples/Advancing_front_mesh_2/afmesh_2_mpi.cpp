@@ -69,7 +69,7 @@ inline bool ends_with(const std::string& s, const std::string& tail) { return af
 inline Mpi_options parse(const std::vector<std::string>& args)
 {
   Mpi_options m;
-  m.arguments_digest = 1469598103934665603ull;
+  m.arguments_digest = digest_start;
   std::vector<std::string> rest;
   bool no_output = false, threads = false, stream = false;
   for(std::size_t i = 0; i < args.size(); ++i) {
@@ -77,7 +77,7 @@ inline Mpi_options parse(const std::vector<std::string>& args)
     // the options that make the parts (not those that only say what to
     // print or how to write it, which a resumed run may change)
     if(a != "--stop-after-meshing" && a != "--resume" && a != "--stats" && a != "--vtu-ascii")
-      for(unsigned char c : a + '\0') m.arguments_digest = (m.arguments_digest ^ c) * 1099511628211ull;
+      m.arguments_digest = digest_bytes(a.c_str(), a.size() + 1, m.arguments_digest);
     if(a == "--help" || a == "-h") {
       m.help = true;
       return m;
@@ -194,11 +194,8 @@ inline bool outputs_writable(const Mpi_options& m, int rank, int ranks)
 template <class K>
 std::uint64_t digest(const Decomposition<K>& d)
 {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](const void* data, std::size_t n) {
-    const unsigned char* b = static_cast<const unsigned char*>(data);
-    for(std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  };
+  std::uint64_t h = digest_start;
+  auto mix = [&h](const void* data, std::size_t n) { h = digest_bytes(data, n, h); };
   mix(&d.parts, sizeof d.parts);
   mix(&d.plan.axis, sizeof d.plan.axis);
   for(const auto& c : d.plan.cuts) mix(&c.position, sizeof c.position);

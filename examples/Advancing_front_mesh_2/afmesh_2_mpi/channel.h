@@ -31,6 +31,17 @@ struct Mpi_session
   Mpi_session& operator=(const Mpi_session&) = delete;
 };
 
+// A 64-bit FNV-1a digest of `n` bytes, continuing from `h`: what the ranks
+// compare (their decompositions, the options of a resumed run) and the
+// checksum of a kept part.
+constexpr std::uint64_t digest_start = 1469598103934665603ull;
+inline std::uint64_t digest_bytes(const void* data, std::size_t n, std::uint64_t h = digest_start)
+{
+  const unsigned char* b = static_cast<const unsigned char*>(data);
+  for(std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  return h;
+}
+
 // The message tags of the tool's exchanges.
 enum Tag : int { BAND = 1, BAND_VERDICT, BAND_IDS, MERGED_POINTS, MERGED_TRIANGLES, OUTPUT_NAME, FIT };
 

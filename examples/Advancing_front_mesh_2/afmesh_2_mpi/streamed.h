@@ -385,9 +385,7 @@ private:
 
   static std::uint64_t checksum(const std::string& b)
   {
-    std::uint64_t h = 1469598103934665603ull;
-    for(unsigned char c : b) h = (h ^ c) * 1099511628211ull;
-    return h;
+    return digest_bytes(b.data(), b.size());
   }
 
   const Decomposition<K>& d_;
