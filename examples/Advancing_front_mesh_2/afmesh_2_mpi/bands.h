@@ -32,7 +32,6 @@ namespace afmesh_2_mpi {
 template <class K, class Triangle = typename CDT<K>::Face_handle>
 struct Band
 {
-  typedef Triangle Triangle_handle;
   AFM::internal::Triangle_soup_2<typename K::Point_2> soup;
   std::vector<Triangle> faces;
 };

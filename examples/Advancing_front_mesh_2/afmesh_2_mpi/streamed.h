@@ -196,7 +196,7 @@ public:
     if(part_cdt.dimension() == 2)
       for(auto e = part_cdt.finite_edges_begin(); e != part_cdt.finite_edges_end(); ++e)
         if(part_cdt.is_constrained(*e))
-          constraints_.insert(edge_key(e->first->vertex(CDT<K>::ccw(e->second))->point(),
+          constraints_.insert(undirected_key(e->first->vertex(CDT<K>::ccw(e->second))->point(),
                                        e->first->vertex(CDT<K>::cw(e->second))->point()));
   }
 
@@ -215,9 +215,9 @@ public:
     for(std::size_t cut : cuts_)
       if(near(cut, held_band_sizes * d_.interface_size[cut], a, b, c)) {
         unsigned char flags = 0;
-        if(constraints_.count(edge_key(b, c)) > 0) flags |= 1;
-        if(constraints_.count(edge_key(c, a)) > 0) flags |= 2;
-        if(constraints_.count(edge_key(a, b)) > 0) flags |= 4;
+        if(constraints_.count(undirected_key(b, c)) > 0) flags |= 1;
+        if(constraints_.count(undirected_key(c, a)) > 0) flags |= 2;
+        if(constraints_.count(undirected_key(a, b)) > 0) flags |= 4;
         held_.push_back(Held{{{i, j, k}}, {{a, b, c}}, flags});
         return;
       }
@@ -376,11 +376,10 @@ private:
     return false;
   }
   bool on_interface(std::size_t c, const Point& p) const { return d_.interface_points[c].count(key_of(p)) > 0; }
-  static std::array<double, 4> edge_key(const Point& p, const Point& q)
+  // an undirected edge as parts.h's key: its ends in order
+  static Edge_key undirected_key(const Point& p, const Point& q)
   {
-    std::pair<double, double> a = key_of(p), b = key_of(q);
-    if(b < a) std::swap(a, b);
-    return {{a.first, a.second, b.first, b.second}};
+    return key_of(q) < key_of(p) ? edge_key(q, p) : edge_key(p, q);
   }
 
   static std::uint64_t checksum(const std::string& b)
@@ -390,7 +389,7 @@ private:
 
   const Decomposition<K>& d_;
   std::vector<std::size_t> cuts_;
-  std::set<std::array<double, 4> > constraints_;
+  std::set<Edge_key> constraints_;
   Scratch_file points_, triangles_;
   std::vector<Held> held_;
   Counted_bits used_;
