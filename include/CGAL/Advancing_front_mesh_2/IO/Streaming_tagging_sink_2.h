@@ -13,11 +13,10 @@
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
 #include <CGAL/Advancing_front_mesh_2/IO/Streaming_mesh_writer.h>
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Input_tags_2.h>
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_writer_state.h>
 #include <CGAL/Advancing_front_mesh_2/Markers_and_regions_2.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
-
-#include <CGAL/enum.h>
 
 #include <array>
 #include <cstddef>
@@ -25,7 +24,6 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -76,50 +74,9 @@ public:
   \param input the input triangulation, as `insert_poly()` left it
   \param tags its markers and regions (regions need not be marked)
   */
-  Streaming_tagging_sink_2(const CDT& input, const Markers_and_regions_2<CDT>& tags) : copy_(input)
+  Streaming_tagging_sink_2(const CDT& input, const Markers_and_regions_2<CDT>& tags)
+      : tags_(input, tags), written_(tags_.number_of_input_vertices(), none)
   {
-    typedef typename CDT::Face_handle Face_handle;
-    typedef typename CDT::Vertex_handle Vertex_handle;
-    has_regions_ = tags.has_regions();
-    if(has_regions_) {
-      Markers_and_regions_2<CDT> own;
-      for(const auto& r : tags.regions()) own.add_region(r.seed, r.attribute, r.max_area);
-      own.mark_regions(copy_);
-      attributes_.push_back(0.);
-      for(auto f = copy_.finite_faces_begin(); f != copy_.finite_faces_end(); ++f)
-        if(f->is_in_domain()) face_attribute_[&*f] = own.region_attribute(f);
-      for(const auto& r : tags.regions()) attributes_.push_back(r.attribute);
-    }
-    for(auto v = copy_.finite_vertices_begin(); v != copy_.finite_vertices_end(); ++v) {
-      vertex_ordinal_[&*v] = copy_vertices_.size();
-      copy_vertices_.push_back(v);
-    }
-    written_.assign(copy_vertices_.size(), none);
-    markers_.assign(copy_vertices_.size(), 0);
-    auto ordinal_of = [&](Vertex_handle v) {
-      typename CDT::Locate_type lt;
-      int li = 0;
-      const Face_handle f = copy_.locate(v->point(), lt, li);
-      if(lt != CDT::VERTEX)
-        throw std::logic_error("Streaming_tagging_sink_2: an input vertex is not a vertex of the copy");
-      return vertex_ordinal_.at(&*f->vertex(li));
-    };
-    if(input.dimension() < 2) return;
-    for(auto v = input.finite_vertices_begin(); v != input.finite_vertices_end(); ++v)
-      markers_[ordinal_of(v)] = tags.vertex_marker(input, v);
-    for(auto e = input.finite_edges_begin(); e != input.finite_edges_end(); ++e) {
-      Face_handle f = e->first;
-      int i = e->second;
-      if(!input.is_constrained(*e)) continue;
-      if(input.is_infinite(f) || !f->is_in_domain()) {
-        const Face_handle g = f->neighbor(i);
-        if(input.is_infinite(g) || !g->is_in_domain()) continue;
-        i = g->index(f);
-        f = g;
-      }
-      segments_.push_back({ordinal_of(f->vertex(CDT::ccw(i))), ordinal_of(f->vertex(CDT::cw(i))),
-                           tags.edge_marker(input, f, i)});
-    }
   }
 
   /*!
@@ -133,7 +90,7 @@ public:
     Streaming_mesh_writer_options o;
     o.use_binary_mode = use_binary_mode;
     o.markers = true;
-    o.region_attributes = attributes_;
+    o.region_attributes = tags_.attributes();
     return o;
   }
 
@@ -154,15 +111,10 @@ public:
   void add_vertex(std::size_t index, const Point& p) override
   {
     int marker = 0;
-    if(copy_.dimension() == 2) {
-      typename CDT::Locate_type lt;
-      int li = 0;
-      hint_ = copy_.locate(p, lt, li, hint_);
-      if(lt == CDT::VERTEX) {
-        const std::size_t ordinal = vertex_ordinal_.at(&*hint_->vertex(li));
-        marker = markers_[ordinal];
-        written_[ordinal] = index;
-      }
+    const std::size_t ordinal = tags_.input_vertex_at(p);
+    if(ordinal != Tags::none) {
+      marker = tags_.marker(ordinal);
+      written_[ordinal] = index;
     }
     writer_->add_vertex(index, p, marker);
   }
@@ -182,7 +134,7 @@ public:
   void add_finished_triangle(std::size_t i, std::size_t j, std::size_t k, const Point& a, const Point& b,
                              const Point& c) override
   {
-    writer_->add_triangle(i, j, k, has_regions_ ? region_attribute(a, b, c) : 0.);
+    writer_->add_triangle(i, j, k, tags_.has_regions() ? tags_.region_attribute(a, b, c) : 0.);
   }
 
   /*!
@@ -249,7 +201,7 @@ public:
   void close()
   {
     if(!segments_given_) {
-      for(const Segment& s : segments_) {
+      for(const typename Tags::Segment& s : tags_.segments()) {
         if(written_[s.a] == none || written_[s.b] == none)
           throw std::logic_error("Streaming_tagging_sink_2: a segment's end point was not written");
         writer_->add_segment(written_[s.a], written_[s.b], s.marker);
@@ -260,68 +212,14 @@ public:
   }
 
 private:
-  typedef typename CDT::Face_handle Face_handle;
-  typedef typename CDT::Vertex_handle Vertex_handle;
-  static constexpr std::size_t none = ~std::size_t(0);
-
-  struct Segment
-  {
-    std::size_t a, b; // ordinals of the copy's vertices
-    int marker;
-  };
+  typedef internal::Input_tags_2<CDT> Tags;
+  static constexpr std::size_t none = Tags::none;
 
   static const char* magic() { return "CGAL Advancing_front_mesh_2 Streaming_tagging_sink_2 state 1\n"; }
 
-  double attribute_of(Face_handle f) const
-  {
-    const auto it = face_attribute_.find(&*f);
-    return it == face_attribute_.end() ? 0. : it->second;
-  }
-
-  // The attribute of the input face the triangle (a, b, c) starts in at a.
-  double region_attribute(const Point& a, const Point& b, const Point& c)
-  {
-    if(copy_.dimension() < 2) return 0.;
-    typename CDT::Locate_type lt;
-    int li = 0;
-    hint_ = copy_.locate(a, lt, li, hint_);
-    const auto orientation = copy_.geom_traits().orientation_2_object();
-    if(lt == CDT::FACE) return attribute_of(hint_);
-    if(lt == CDT::EDGE) {
-      // hint_ lies left of s -> t; the triangle is on c's side if b is on the line
-      const Point& s = hint_->vertex(CDT::ccw(li))->point();
-      const Point& t = hint_->vertex(CDT::cw(li))->point();
-      CGAL::Orientation o = orientation(s, t, b);
-      if(o == CGAL::COLLINEAR) o = orientation(s, t, c);
-      return attribute_of(o == CGAL::LEFT_TURN ? hint_ : hint_->neighbor(li));
-    }
-    if(lt != CDT::VERTEX) return 0.;
-    // the face (a, p, q) whose angle [a->p, a->q) holds the direction a->b:
-    // the triangle's interior starts just counter-clockwise of a->b
-    const Vertex_handle v = hint_->vertex(li);
-    auto f = copy_.incident_faces(v), end = f;
-    do {
-      if(copy_.is_infinite(f)) continue;
-      const int k = f->index(v);
-      const Point& p = f->vertex(CDT::ccw(k))->point();
-      const Point& q = f->vertex(CDT::cw(k))->point();
-      if(orientation(a, p, b) != CGAL::RIGHT_TURN && orientation(a, q, b) == CGAL::RIGHT_TURN)
-        return attribute_of(f);
-    } while(++f != end);
-    return 0.;
-  }
-
-  CDT copy_;
-  bool has_regions_ = false;
-  std::vector<double> attributes_;
-  std::unordered_map<const void*, double> face_attribute_; // per in-domain face of copy_
-  std::vector<Vertex_handle> copy_vertices_;
-  std::unordered_map<const void*, std::size_t> vertex_ordinal_;
-  std::vector<int> markers_;          // per vertex of copy_
-  std::vector<std::size_t> written_;  // per vertex of copy_: the writer's number, or none
-  std::vector<Segment> segments_;
+  internal::Input_tags_2<CDT> tags_;
+  std::vector<std::size_t> written_; // per input vertex: the writer's number, or none
   bool segments_given_ = false;
-  Face_handle hint_;
   Writer* writer_ = nullptr;
   std::unique_ptr<Writer> owned_writer_;
 };
