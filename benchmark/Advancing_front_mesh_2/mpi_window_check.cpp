@@ -91,7 +91,7 @@ std::string attribute(const std::string& tag, const std::string& name)
 // A piece's arrays in its mapping.
 struct Piece
 {
-  std::uint64_t points = 0, cells = 0;
+  std::uint64_t points = 0, cells = 0, triangles = 0; // the triangles first, then the segments (lines)
   const double* xyz = nullptr;
   const char* connectivity = nullptr;
   bool wide = true; // Int64 connectivity
@@ -110,6 +110,7 @@ Piece read_piece(const Mapped& f)
   p.points = std::stoull(attribute(head.substr(piece_tag, head.find('>', piece_tag) - piece_tag), "NumberOfPoints"));
   p.cells = std::stoull(attribute(head.substr(piece_tag, head.find('>', piece_tag) - piece_tag), "NumberOfCells"));
   bool in_points = false;
+  std::uint64_t connectivity_bytes = 0;
   for(std::size_t at = head.find('<'); at < appended; at = head.find('<', at + 1)) {
     const std::string tag = head.substr(at, head.find('>', at) - at);
     if(tag.compare(0, 7, "<Points") == 0) in_points = true;
@@ -128,7 +129,12 @@ Piece read_piece(const Mapped& f)
     } else if(name == "connectivity") {
       p.connectivity = data;
       p.wide = attribute(tag, "type") == "Int64";
-      if(bytes != (p.wide ? 24 : 12) * p.cells) throw std::runtime_error(f.name() + ": connectivity of the wrong size");
+      connectivity_bytes = bytes;
+    } else if(name == "types") {
+      if(bytes != p.cells) throw std::runtime_error(f.name() + ": types of the wrong size");
+      p.triangles = std::uint64_t(std::count(data, data + bytes, char(5)));
+      if(std::count(data, data + p.triangles, char(5)) != std::ptrdiff_t(p.triangles))
+        throw std::runtime_error(f.name() + ": a cell other than a triangle before the last triangle");
     } else if(name == "GlobalNodeId") {
       p.global_id = reinterpret_cast<const std::int64_t*>(data);
       if(bytes != 8 * p.points) throw std::runtime_error(f.name() + ": GlobalNodeId of the wrong size");
@@ -136,6 +142,9 @@ Piece read_piece(const Mapped& f)
   }
   if(p.xyz == nullptr || p.connectivity == nullptr || p.global_id == nullptr)
     throw std::runtime_error(f.name() + ": points, connectivity or GlobalNodeId missing");
+  // the segments after the triangles are lines of 2 vertices
+  if(connectivity_bytes != (p.wide ? 8 : 4) * (3 * p.triangles + 2 * (p.cells - p.triangles)))
+    throw std::runtime_error(f.name() + ": connectivity of the wrong size");
   return p;
 }
 
@@ -227,7 +236,7 @@ int main(int argc, char* argv[])
             in_window[v] = std::uint8_t(w + 1);
             break;
           }
-      for(std::uint64_t t = 0; t < p.cells; ++t) {
+      for(std::uint64_t t = 0; t < p.triangles; ++t) {
         const std::uint64_t a = vertex_of(p, 3 * t), b = vertex_of(p, 3 * t + 1), c = vertex_of(p, 3 * t + 2);
         if(a >= p.points || b >= p.points || c >= p.points) throw std::runtime_error(name + ": a vertex out of range");
         const std::uint8_t w = in_window[a];

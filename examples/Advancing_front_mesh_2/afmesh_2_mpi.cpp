@@ -12,25 +12,34 @@
 // them by merging a band of triangles on both sides (afmesh_2_mpi/bands.h).
 // OUT.pvtu is a collection (ParaView, meshio) of one piece per rank,
 // OUT_<rank>.vtu, with the global vertex numbers (point data GlobalNodeId)
-// and the rank of each triangle (cell data partition); --merge writes one
-// file instead (rank 0 writes it as the ranks send their shares).
+// and the rank of each triangle (cell data partition), and the markers and
+// regions as afmesh_2's .vtu has them (afmesh_2_mpi/tags.h); --merge writes
+// one file instead (rank 0 writes it as the ranks send their shares).
 //
 // --stream meshes each rank's part in streaming mode, for parts larger than
 // memory (afmesh_2_mpi/streamed.h): the triangles go to scratch files
 // beside the pieces as they are finished, but for those near the cuts,
 // which the interface merge needs.
 //
+// With --stream a rank keeps its part once meshed, and --checkpoint-every K
+// checkpoints it every K triangles while it is meshed (the mesher's restart
+// files, OUT_<rank>.vtu.checkpoint); the same command with --resume, after
+// --stop-after-meshing, --stop-after-checkpoint or a failure, takes the
+// kept parts, continues the others from their checkpoints and writes the
+// uninterrupted run's pieces.
+//
 // The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
-// MPI: --merge with --stream, checkpoints and --resume, --smooth, --min-angle,
-// --keep-segments, --time-limit, --max-steps, --threads, --kernel other than
-// epick, --histogram, --report, the markers and regions in the outputs, and
-// the formats other than .pvtu, .off and .vtu: they are refused (exit 2).
+// MPI: --merge with --stream, --smooth, --min-angle, --keep-segments,
+// --time-limit, --max-steps, --threads, --kernel other than epick,
+// --histogram, --report, and the formats other than .pvtu, .off and .vtu:
+// they are refused (exit 2).
 //
 // Exit codes as afmesh_2's: 0 success; 1 invalid input; 2 bad usage; 3 an
 // output that could not be written, or an internal error.
 #include "afmesh_2_mpi/channel.h"
 #include "afmesh_2_mpi/merged.h"
 #include "afmesh_2_mpi/streamed.h"
+#include "afmesh_2_mpi/tags.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -59,10 +68,26 @@ struct Mpi_options
   // --stream: each rank keeps its part once meshed, until the run ends;
   // --stop-after-meshing stops there, --resume takes the kept parts
   bool stop_after_meshing = false, resume = false;
+  // --checkpoint-every K: each streamed rank checkpoints its part every K
+  // triangles (--stop-after-checkpoint: stops after the first); --resume
+  // goes on from there
+  std::size_t checkpoint_every = 0;
+  bool stop_after_checkpoint = false;
   std::uint64_t arguments_digest = 0; // of the arguments that make the parts
 };
 
 inline bool ends_with(const std::string& s, const std::string& tail) { return afmesh_2::ends_with(s, tail); }
+
+// The value of --checkpoint-every: a count of triangles above 0.
+inline std::size_t triangle_count_option(const std::string& option, const std::string& value)
+{
+  const bool digits = !value.empty() && value.size() <= 18 &&
+                      value.find_first_not_of("0123456789") == std::string::npos;
+  const std::size_t n = digits ? std::size_t(std::stoull(value)) : 0;
+  if(n == 0) throw afmesh_2::Usage_error("the option '" + option + "' takes a number of triangles above 0, not '" +
+                                         value + "'");
+  return n;
+}
 
 // The tool's own options (-o, --merge) taken out, the others read by
 // afmesh_2's parser; throws afmesh_2::Usage_error.
@@ -74,6 +99,18 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   bool no_output = false, threads = false, stream = false;
   for(std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
+    // the checkpoints change nothing in the mesh: a resumed run may set
+    // others, or none
+    if(a == "--checkpoint-every" || a.compare(0, 19, "--checkpoint-every=") == 0) {
+      if(a.size() == 18 && i + 1 == args.size())
+        throw afmesh_2::Usage_error("the option '" + a + "' requires an argument");
+      m.checkpoint_every = triangle_count_option("--checkpoint-every", a.size() == 18 ? args[++i] : a.substr(19));
+      continue;
+    }
+    if(a == "--stop-after-checkpoint") {
+      m.stop_after_checkpoint = true;
+      continue;
+    }
     // the options that make the parts (not those that only say what to
     // print or how to write it, which a resumed run may change)
     if(a != "--stop-after-meshing" && a != "--resume" && a != "--stats" && a != "--vtu-ascii")
@@ -112,8 +149,9 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   m.opt = afmesh_2::parse(rest);
   m.opt.stream = stream;
   const afmesh_2::Options& o = m.opt;
-  const char* refused = o.checkpoint_every > 0     ? "--checkpoint-every"
-                        : !o.resume.empty()        ? "--resume"
+  const char* refused = o.checkpoint_every > 0     ? "--checkpoint-every K FILE (here: --checkpoint-every K, "
+                                                     "the checkpoints are beside the pieces)"
+                        : !o.resume.empty()        ? "--resume=FILE (--resume takes no file here)"
                         : o.smooth > 0             ? "--smooth"
                         : o.min_angle != 0         ? "--min-angle"
                         : o.keep_segments          ? "--keep-segments"
@@ -129,9 +167,13 @@ inline Mpi_options parse(const std::vector<std::string>& args)
     throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
   if(o.stream && (m.merge || m.outputs.empty()))
     throw afmesh_2::Usage_error("--stream writes pieces: give -o OUT.pvtu (without --merge)");
-  if((m.stop_after_meshing || m.resume) && !o.stream)
-    throw afmesh_2::Usage_error(std::string(m.resume ? "--resume" : "--stop-after-meshing") +
+  if((m.stop_after_meshing || m.resume || m.checkpoint_every > 0) && !o.stream)
+    throw afmesh_2::Usage_error(std::string(m.resume                ? "--resume"
+                                            : m.stop_after_meshing ? "--stop-after-meshing"
+                                                                   : "--checkpoint-every") +
                                 " keeps the parts of a streamed run: add --stream");
+  if(m.stop_after_checkpoint && m.checkpoint_every == 0)
+    throw afmesh_2::Usage_error("--stop-after-checkpoint needs --checkpoint-every");
   for(const std::string& out : m.outputs) {
     if(m.merge && !ends_with(out, ".off") && !ends_with(out, ".vtu"))
       throw afmesh_2::Usage_error("--merge writes .off or .vtu, not '" + out + "'");
@@ -228,6 +270,41 @@ Share_figures share_figures(const Work& w, std::uint64_t triangles, std::uint64_
   return f;
 }
 
+// The digest of the options that make the parts and of the input files'
+// content (a file changed under the same name is another run's).
+inline std::uint64_t input_files_digest(const Mpi_options& m)
+{
+  std::uint64_t h = m.arguments_digest;
+  for(const std::string& f : {m.opt.input, m.opt.sources})
+    if(!f.empty()) {
+      const std::string sum = afmesh_2::file_checksum(f);
+      h = digest_bytes(sum.data(), sum.size() + 1, h);
+    }
+  return h;
+}
+
+// --resume, for a part that was not kept whole: whether the part has a
+// checkpoint of this run to go on from (ck.file, its user data the run's);
+// if so, `stream` is set back to it. A checkpoint of another run is not
+// taken (the part is meshed again); one that cannot be read stops the rank.
+template <class K>
+bool continue_from_checkpoint(Part_stream<K>& stream, const Part_checkpoints& ck)
+{
+  if(!std::ifstream(ck.file.c_str())) return false;
+  try {
+    const AFM::Checkpoint_info info = Part_mesher<K>::read_checkpoint_info(ck.file);
+    if(info.user_data != ck.user_data) {
+      std::cerr << "afmesh_2_mpi: note: " << ck.file
+                << " is the checkpoint of another run (other options or input files): the part is meshed again\n";
+      return false;
+    }
+    stream.resume_checkpoint(info.sink_state);
+  } catch(const std::runtime_error& e) {
+    throw std::runtime_error(std::string(e.what()) + " (delete " + ck.file + " to mesh the part again)");
+  }
+  return true;
+}
+
 inline int run(const Mpi_options& m, int rank, int ranks)
 {
   const auto t_start = std::chrono::steady_clock::now();
@@ -239,6 +316,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   // (as mesh_in_parallel_2() checks its threads' parts), make the ranks
   // start again with fewer parts.
   std::unique_ptr<afmesh_2::Input<K> > input;
+  std::unique_ptr<Share_tags<K> > tags;
   Decomposition<K> d;
   CDT<K> part_cdt;
   std::size_t part = 0;
@@ -248,7 +326,11 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     std::string input_error;
     try {
       afmesh_2::load_input(m.opt, *input);
-      d = decompose<K>(*input, int(wanted));
+      // found on the input before the cuts are made in it
+      tags.reset(new Share_tags<K>(input->cdt, input->tags));
+      Share_tags<K>& t = *tags;
+      d = decompose<K>(*input, int(wanted), [&t](const typename K::Point_2& a, const typename K::Point_2& b,
+                                                  const typename K::Point_2& v) { t.split_segment(a, b, v); });
     } catch(const afmesh_2::Input_error& e) {
       input_error = e.what();
     } catch(const std::invalid_argument& e) {
@@ -297,38 +379,68 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   const auto t_mesh = std::chrono::steady_clock::now();
   const bool has_part = part < d.parts;
   CDT<K>& meshed = d.parts == 1 ? in.cdt : part_cdt;
+  // --stream: a part kept by a previous run of the same command is taken
+  // as it is (--resume), or continued from its checkpoint; a part meshed
+  // is kept until the run ends, so that a run that fails after it can be
+  // resumed without meshing it again
+  const std::uint64_t run_digest = digest(d) ^ input_files_digest(m);
+  const std::string stem = m.opt.stream ? piece_name(m.outputs.front(), rank) : std::string();
   std::unique_ptr<Part_stream<K> > stream;
-  if(m.opt.stream) stream.reset(new Part_stream<K>(d, part, meshed, piece_name(m.outputs.front(), rank)));
+  if(m.opt.stream) stream.reset(new Part_stream<K>(d, part, meshed, stem, run_digest, *tags));
+  Part_checkpoints ck;
+  if(stream) {
+    ck.every = m.checkpoint_every;
+    ck.file = Part_stream<K>::checkpoint_file(stem);
+    ck.user_data = "afmesh_2_mpi run " + std::to_string(run_digest);
+    ck.stop = m.stop_after_checkpoint;
+  }
+  bool resumed = false;
+  if(stream && has_part && m.resume) {
+    resumed = stream->resume();
+    if(!resumed && std::ifstream(Part_stream<K>::kept_part_file(stem).c_str()))
+      std::cerr << "afmesh_2_mpi: note: " << Part_stream<K>::kept_part_file(stem)
+                << " is not whole, or the part of another run (other options or input files), or its scratch "
+                   "files are not there: the part is not taken\n";
+    if(!resumed) ck.resume = continue_from_checkpoint<K>(*stream, ck);
+  }
+  if(stream && has_part && !resumed) {
+    if(ck.resume) std::remove(Part_stream<K>::kept_part_file(stem).c_str());
+    else stream->start_anew();
+    // a checkpoint on disk refers to the scratch files
+    if(ck.every > 0 || ck.resume) stream->keep_scratch();
+  }
   AFM::Statistics st;
   AFM::Mesh_return_code rc = AFM::MESH_COMPLETE;
   // from here on a rank may fail alone: what it throws must not pass for
   // invalid input (which every rank would see), but end every rank
   // (main()'s MPI_Abort), or its neighbours would wait for it forever
-  // --stream: a part kept by a previous run of the same command is taken
-  // as it is (--resume); a part meshed is kept until the run ends, so that
-  // a run that fails after it can be resumed without meshing it again
-  const std::string kept_part = stream ? piece_name(m.outputs.front(), rank) + ".part" : std::string();
-  const std::uint64_t run_digest = digest(d) ^ m.arguments_digest;
-  bool resumed = false;
-  if(stream && has_part && m.resume) resumed = stream->resume(kept_part, run_digest);
-  if(stream && has_part && !resumed) std::remove(kept_part.c_str());
   try {
     if(resumed) {
       st.number_of_faces = stream->streamed_triangles() + stream->held().size();
     } else if(has_part && d.parts == 1) {
-      rc = mesh_whole<K>(m.opt, in, stream.get(), st);
+      rc = mesh_whole<K>(m.opt, in, stream.get(), ck, st);
     } else if(has_part) {
-      rc = mesh_part<K>(m.opt, in, part_cdt, stream.get(), st);
+      rc = mesh_part<K>(m.opt, in, part_cdt, stream.get(), ck, st);
     }
   } catch(const std::invalid_argument& e) {
     throw std::runtime_error(std::string("meshing the part: ") + e.what());
   }
-  if(stream && has_part && !resumed) {
+  const bool stopped = rc == AFM::STOPPED_AT_CHECKPOINT;
+  if(stream && has_part && !resumed && !stopped) {
     stream->close();
-    stream->keep(kept_part, run_digest);
+    stream->keep();
   }
   const double t_meshing = seconds_since(t_mesh);
   const std::uint64_t parts_resumed = sum_over_ranks(resumed ? 1 : 0);
+  const std::uint64_t parts_stopped = sum_over_ranks(stopped ? 1 : 0);
+  if(parts_stopped > 0) {
+    if(rank == 0)
+      std::cerr << "afmesh_2_mpi: note: " << parts_stopped << " of " << d.parts
+                << " parts stopped after a checkpoint (OUT_<rank>.vtu.checkpoint beside the pieces), the others are "
+                   "meshed and kept; the same command with --resume instead of --stop-after-checkpoint goes on from "
+                   "there\n";
+    return 0;
+  }
   if(m.stop_after_meshing) {
     if(rank == 0)
       std::cerr << "afmesh_2_mpi: note: the parts are meshed and kept beside the pieces (" << parts_resumed
@@ -354,14 +466,16 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     for(const std::string& out : m.outputs) write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
     t_writing = seconds_since(t_write);
     // every piece is written: the kept parts go
-    if(all_ranks(true) && has_part) stream->discard(kept_part);
+    if(all_ranks(true) && has_part) stream->discard();
     share = share_figures(w, mesh.triangle_count(), mesh.owned.total());
     share.held_triangles = stream->held().size();
   } else {
     const auto t_merge = std::chrono::steady_clock::now();
     Interface_work<K> w;
     merge_interfaces<K>(in, d, rank, meshed, w);
-    const Rank_mesh mesh = rank_mesh<K>(meshed, w, rank, has_part);
+    Rank_mesh mesh = rank_mesh<K>(meshed, w, rank, has_part);
+    mesh.tags = tag_share<K>(*tags, mesh.points, mesh.triangles);
+    check_segments_found<K>(*tags, mesh.tags.segments.size());
     t_interfaces = seconds_since(t_merge);
     const auto t_write = std::chrono::steady_clock::now();
     for(const std::string& out : m.outputs) {
@@ -380,8 +494,10 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     double meshing, interfaces, writing, peak_memory_mb;
     Share_figures share;
     int code;
-    bool resumed;
-  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc), resumed};
+    bool resumed, from_checkpoint;
+    std::uint64_t checkpoints;
+  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc), resumed, ck.resume,
+         std::uint64_t(st.checkpoints_written)};
   const std::vector<Figures> all = gather_to_root(mine, ranks);
   if(rank == 0 && m.opt.stats) {
     nlohmann::ordered_json j;
@@ -410,6 +526,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
       if(m.opt.stream) {
         per_rank.back()["held_triangles"] = s.held_triangles;
         per_rank.back()["resumed_part"] = f.resumed;
+        per_rank.back()["resumed_from_checkpoint"] = f.from_checkpoint;
+        per_rank.back()["checkpoints_written"] = f.checkpoints;
       }
     }
     j["number_of_faces"] = triangles;
@@ -436,7 +554,8 @@ int main(int argc, char* argv[])
     m = parse(std::vector<std::string>(argv + 1, argv + argc));
     if(m.help && mpi.rank == 0)
       std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
-                   "                    (-o OUT.pvtu [--stream] | --merge -o OUT.off|OUT.vtu | --no-output)\n"
+                   "                    (-o OUT.pvtu [--stream [--checkpoint-every K] [--resume]]\n"
+                   "                     | --merge -o OUT.off|OUT.vtu | --no-output)\n"
                    "                    [--stats]\n\n"
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
@@ -444,6 +563,9 @@ int main(int argc, char* argv[])
                    "scratch files beside the pieces). A streamed rank keeps its part, once meshed,\n"
                    "until the pieces are written: --stop-after-meshing stops there, and the same\n"
                    "command with --resume (after a stop or a failure) meshes only the parts not kept.\n"
+                   "--checkpoint-every K (with --stream) checkpoints each part every K triangles\n"
+                   "while it is meshed (OUT_<rank>.vtu.checkpoint); --resume goes on from there.\n"
+                   "--stop-after-checkpoint stops each rank after its first checkpoint.\n"
                    "The input and size options are afmesh_2's (afmesh_2 --help).\n\n"
                    "Exit codes: 0 success, 1 invalid input, 2 bad usage, 3 an output that could not\n"
                    "be written, or an internal error.\n";

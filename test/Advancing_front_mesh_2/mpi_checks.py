@@ -8,12 +8,15 @@ whole mesh); the counts within 1% of the serial mesh. The pieces of a .pvtu
 are read back with meshio: their global vertex numbers must agree with the
 points and, put together, give the --merge mesh. Each part streamed
 (--stream) gives pieces that are valid put together, and close to the mesh
-made in memory (the same on one rank). Bad usage and invalid input stop
+made in memory (the same on one rank); a streamed run stopped after its
+parts were meshed, or at their checkpoints, and resumed gives the same
+pieces as one run. Bad usage and invalid input stop
 every rank with one message and afmesh_2's exit codes.
 
 Usage: mpi_checks.py MPIEXEC AFMESH_2_MPI AFMESH_2 AFM_MAKE_INPUT AFM_CHECK_MESH WORK_DIR [LAKE.msh]
 """
 import json
+import math
 import os
 import subprocess
 import sys
@@ -242,6 +245,214 @@ left = [f for f in os.listdir("kept") if f.endswith(".part") or f.endswith(".tmp
 check(not left, "files left after a complete run: %s" % left)
 r = mpi(2, "square.poly", "--size", "0.005", "--resume", "-o", "kept/m.pvtu", code=2)
 check("add --stream" in r.stderr, "--resume without --stream: " + r.stderr)
+
+# checkpoints within a part (afmesh_2's restart facility, the mesher's own):
+# each rank stops after its first checkpoint, then after its next one (the
+# sink's state in the other side file); the first checkpoint put back (a
+# run killed after writing the second side file, before the mesher renamed
+# the second checkpoint into place) must find its own side file; bytes
+# written after a checkpoint, as by a run killed between two, are cut back;
+# --resume goes on from the checkpoints and gives the uninterrupted run's
+# pieces, byte for byte
+square = ("square.poly", "--size", "0.005", "--stream")
+mpi(2, *square, "--checkpoint-every", "5000", "--stop-after-checkpoint", "-o", "kept/c.pvtu")
+kept = sorted(os.listdir("kept"))
+check(all("c_%d.vtu.%s" % (rank, f) in kept for rank in range(2) for f in ("checkpoint", "checkpoint.sink0"))
+      and "c_0.vtu" not in kept and "c.pvtu" not in kept, "--stop-after-checkpoint: %s" % kept)
+first = {rank: open("kept/c_%d.vtu.checkpoint" % rank, "rb").read() for rank in range(2)}
+stats = json.loads(mpi(2, *square, "--checkpoint-every", "5000", "--stop-after-checkpoint", "--resume", "-o",
+                       "kept/c.pvtu", "--stats").stdout or "{}")
+check(stats == {}, "a run stopped at a checkpoint printed statistics")
+check(all(os.path.exists("kept/c_%d.vtu.checkpoint.sink1" % rank) for rank in range(2)),
+      "the second checkpoint did not write the other side file: %s" % sorted(os.listdir("kept")))
+with open("kept/c_1.vtu.checkpoint", "wb") as f:
+    f.write(first[1])
+for scratch in ("kept/c_0.vtu.triangles.tmp", "kept/c_1.vtu.points.tmp"):
+    with open(scratch, "ab") as f:
+        f.write(b"\xff" * 4096)
+stats = json.loads(mpi(2, *square, "--resume", "-o", "kept/c.pvtu", "--stats").stdout)
+check([(r["resumed_from_checkpoint"], r["checkpoints_written"]) for r in stats["per_rank"]] == [(True, 2), (True, 1)],
+      "--resume after checkpoints: %s" % [(r["resumed_from_checkpoint"], r["checkpoints_written"])
+                                          for r in stats["per_rank"]])
+
+
+def same_pieces(a, b, label):
+    for rank in range(2):
+        same = open("kept/%s_%d.vtu" % (a, rank), "rb").read() == open("kept/%s_%d.vtu" % (b, rank), "rb").read()
+        check(same, "%s: piece %d is not the uninterrupted run's" % (label, rank))
+    left = [f for f in os.listdir("kept") if f.startswith(a + "_") and not f.endswith(".vtu")]
+    check(not left, "%s: files left after a complete run: %s" % (label, left))
+
+
+same_pieces("c", "full", "--resume from checkpoints")
+# one part kept whole, the other continued from its last checkpoint
+mpi(2, *square, "--checkpoint-every=5000", "--stop-after-meshing", "-o", "kept/x.pvtu")
+os.remove("kept/x_1.vtu.part")
+stats = json.loads(mpi(2, *square, "--resume", "-o", "kept/x.pvtu", "--stats").stdout)
+check([(r["resumed_part"], r["resumed_from_checkpoint"]) for r in stats["per_rank"]] == [(True, False), (False, True)],
+      "a kept part and a checkpoint: %s" % [(r["resumed_part"], r["resumed_from_checkpoint"])
+                                             for r in stats["per_rank"]])
+same_pieces("x", "full", "a kept part and a checkpoint")
+# a checkpoint whose side file is damaged stops the ranks, naming it; one
+# of another command, or of an input file changed since, is not taken (the
+# part is meshed again)
+mpi(2, *square, "--checkpoint-every", "5000", "--stop-after-checkpoint", "-o", "kept/d.pvtu")
+with open("kept/d_1.vtu.checkpoint.sink0", "r+b") as f:
+    f.seek(100)
+    byte = f.read(1)
+    f.seek(100)
+    f.write(bytes([byte[0] ^ 1]))
+r = mpi(2, *square, "--resume", "-o", "kept/d.pvtu", code=3)
+check("d_1.vtu.checkpoint.sink0" in r.stderr and "delete kept/d_1.vtu.checkpoint" in r.stderr,
+      "a damaged checkpoint: " + r.stderr)
+r = mpi(2, *square, "--no-pocket-priority", "--resume", "-o", "kept/d.pvtu", "--stats")
+stats = json.loads(r.stdout)
+check([r["resumed_from_checkpoint"] for r in stats["per_rank"]] == [False, False],
+      "another command's checkpoints were taken")
+check("checkpoint of another run" in r.stderr, "another command's checkpoints: no note: " + r.stderr)
+left = [f for f in os.listdir("kept") if f.startswith("d_") and not f.endswith(".vtu")]
+check(not left, "files left after a complete run: %s" % left)
+with open("square.poly") as f:
+    square_text = f.read()
+with open("changed.poly", "w") as f:
+    f.write(square_text)
+mpi(2, "changed.poly", *square[1:], "--checkpoint-every", "5000", "--stop-after-checkpoint", "-o", "kept/e.pvtu")
+with open("changed.poly", "a") as f:
+    f.write("# the same geometry, another file\n")
+stats = json.loads(mpi(2, "changed.poly", *square[1:], "--resume", "-o", "kept/e.pvtu", "--stats").stdout)
+check([r["resumed_from_checkpoint"] for r in stats["per_rank"]] == [False, False],
+      "the checkpoints of an input file changed since were taken")
+for args, message in ((("square.poly", "--checkpoint-every", "10"), "add --stream"),
+                      (square + ("--checkpoint-every", "0"), "above 0"),
+                      (square + ("--checkpoint-every=x",), "above 0"),
+                      (square + ("--stop-after-checkpoint",), "needs --checkpoint-every")):
+    r = mpi(2, *args, "-o", "kept/e.pvtu", code=2)
+    check(message in r.stderr, "%s: %s" % (" ".join(args), r.stderr))
+r = mpi(2, *square, "-o", "kept/e.pvtu", "--checkpoint-every", code=2)
+check("requires an argument" in r.stderr, "--checkpoint-every without K: " + r.stderr)
+
+# the markers and regions of afmesh_2's outputs (an input of three regions
+# with segment and vertex markers, cut by 3 ranks): the pieces, the merged
+# .vtu (binary and ASCII) and the streamed pieces have the vertex markers,
+# the segments (lines, each written once) and the area of each region of
+# afmesh_2 --threads 3's .vtu, which cuts the same way; and a streamed run
+# resumed from checkpoints, with bytes after them in its scratch files (the
+# region attributes' too), the uninterrupted run's pieces
+run(make_input, "tagged-regions", "tagged.poly")
+tagged = ("tagged.poly", "--size", "0.01")
+run(serial, *tagged, "--threads", "3", "-o", "tagged_threads.vtu")
+mpi(3, *tagged, "-o", "kept/t.pvtu")
+mpi(3, *tagged, "--merge", "-o", "tagged_merged.vtu")
+mpi(3, *tagged, "--merge", "--vtu-ascii", "-o", "tagged_ascii.vtu")
+mpi(3, *tagged, "--stream", "-o", "kept/ts.pvtu")
+
+
+def tags_of(files):
+    """The marked vertices, the segments (with their markers and the
+    partition of each) and the area of each region of some .vtu files."""
+    marked, segments, area = set(), [], {}
+    for name in files:
+        m = meshio.read(name)
+        points = m.points[:, :2]
+        marked |= {(p[0], p[1], int(k)) for p, k in zip(points, m.point_data["marker"]) if k != 0}
+        for b, block in enumerate(m.cells):
+            if block.type == "line":
+                for (i, j), k in zip(block.data, m.cell_data["marker"][b]):
+                    segments.append((min(tuple(points[i]), tuple(points[j])), max(tuple(points[i]), tuple(points[j])),
+                                     int(k)))
+            elif block.type == "triangle":
+                p = points[block.data]
+                a = 0.5 * np.abs((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) -
+                                 (p[:, 2, 0] - p[:, 0, 0]) * (p[:, 1, 1] - p[:, 0, 1]))
+                region = m.cell_data["region"][b]
+                for r in np.unique(region):
+                    area[float(r)] = area.get(float(r), 0.) + float(a[region == r].sum())
+    return marked, sorted(segments), area
+
+
+reference = tags_of(["tagged_threads.vtu"])
+check(len(reference[0]) > 0 and len(reference[1]) > 0 and len(reference[2]) == 3,
+      "afmesh_2's tagged mesh: %d marked vertices, %d segments, regions %s" %
+      (len(reference[0]), len(reference[1]), sorted(reference[2])))
+for label, files in (("pieces", ["kept/t_%d.vtu" % r for r in range(3)]), ("merged", ["tagged_merged.vtu"]),
+                     ("merged ASCII", ["tagged_ascii.vtu"]), ("streamed", ["kept/ts_%d.vtu" % r for r in range(3)])):
+    marked, segments, area = tags_of(files)
+    check(marked == reference[0], "%s: %d marked vertices, afmesh_2 --threads 3 %d" %
+          (label, len(marked), len(reference[0])))
+    check(segments == reference[1], "%s: %d segments, afmesh_2 --threads 3 %d" %
+          (label, len(segments), len(reference[1])))
+    check(sorted(area) == sorted(reference[2]) and
+          all(abs(area[r] - reference[2][r]) <= 1e-9 for r in area),
+          "%s: region areas %s, afmesh_2 --threads 3 %s" % (label, area, reference[2]))
+merged = meshio.read("tagged_merged.vtu")
+write_off("tagged_merged.off", merged.points[:, :2], merged.cells_dict["triangle"])
+valid("tagged.poly", "tagged_merged.off", "tagged, 3 ranks")
+streamed_pieces = read_pieces("kept/ts.pvtu", 3)
+if streamed_pieces is not None:
+    write_off("tagged_streamed.off", *streamed_pieces)
+    valid("tagged.poly", "tagged_streamed.off", "tagged, 3 streamed ranks")
+collection = open("kept/t.pvtu").read()
+check(all('Name="%s"' % name in collection for name in ("GlobalNodeId", "marker", "partition", "region")),
+      "the collection does not declare the pieces' arrays: " + collection)
+for rank in range(3):
+    m = meshio.read("kept/t_%d.vtu" % rank)
+    lines = m.cell_data_dict["partition"].get("line", [])
+    check(all(int(k) == rank for k in lines), "a segment of piece %d is not in partition %d" % (rank, rank))
+# the same input turned by 30 degrees: the cuts cross sloped segments
+# between their vertices, where the crossing is rounded to either side
+
+
+def rotate_poly(source, target, degrees):
+    cos, sin = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    rows = [line.split() for line in open(source) if line.split() and not line.startswith("#")]
+
+    def turned(row, rest):
+        x, y = float(row[1]), float(row[2])
+        return " ".join([row[0], repr(cos * x - sin * y), repr(sin * x + cos * y)] + row[3:3 + rest])
+
+    out, at = [" ".join(rows[0])], 1
+    n = int(rows[0][0])
+    out += [turned(row, 1) for row in rows[at:at + n]]
+    at += n
+    n = int(rows[at][0])
+    out += [" ".join(row) for row in rows[at:at + 1 + n]]
+    at += 1 + n
+    for rest in (0, 2):  # the holes, then the regions
+        if at < len(rows):
+            n = int(rows[at][0])
+            out += [rows[at][0]] + [turned(row, rest) for row in rows[at + 1:at + 1 + n]]
+            at += 1 + n
+    with open(target, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+rotate_poly("tagged.poly", "turned.poly", 30)
+turned = ("turned.poly", "--size", "0.01")
+run(serial, *turned, "--threads", "3", "-o", "turned_threads.vtu")
+mpi(3, *turned, "--merge", "-o", "turned_merged.vtu")
+mpi(3, *turned, "--stream", "-o", "kept/turned.pvtu")
+reference = tags_of(["turned_threads.vtu"])
+for label, files in (("turned, merged", ["turned_merged.vtu"]),
+                     ("turned, streamed", ["kept/turned_%d.vtu" % r for r in range(3)])):
+    marked, segments, area = tags_of(files)
+    check(marked == reference[0] and segments == reference[1], "%s: the markers or segments differ" % label)
+    check(sorted(area) == sorted(reference[2]) and all(abs(area[r] - reference[2][r]) <= 1e-9 for r in area),
+          "%s: region areas %s, afmesh_2 --threads 3 %s" % (label, area, reference[2]))
+merged = meshio.read("turned_merged.vtu")
+write_off("turned_merged.off", merged.points[:, :2], merged.cells_dict["triangle"])
+valid("turned.poly", "turned_merged.off", "turned, 3 ranks")
+
+mpi(2, *tagged, "--stream", "-o", "kept/tf.pvtu")
+mpi(2, *tagged, "--stream", "--checkpoint-every", "3000", "--stop-after-checkpoint", "-o", "kept/tc.pvtu")
+for rank in range(2):
+    with open("kept/tc_%d.vtu.regions.tmp" % rank, "ab") as f:
+        f.write(b"\x01" * 800)
+stats = json.loads(mpi(2, *tagged, "--stream", "--resume", "-o", "kept/tc.pvtu", "--stats").stdout)
+check([r["resumed_from_checkpoint"] for r in stats["per_rank"]] == [True, True],
+      "tagged: --resume did not take the checkpoints")
+for rank in range(2):
+    same = open("kept/tc_%d.vtu" % rank, "rb").read() == open("kept/tf_%d.vtu" % rank, "rb").read()
+    check(same, "tagged: --resume from checkpoints: piece %d is not the uninterrupted run's" % rank)
 
 # fewer parts than ranks: a domain too small for 3 parts of 2,000 triangles
 run(make_input, "square-with-hole", "small.poly", "0.05")

@@ -43,7 +43,19 @@ inline std::uint64_t digest_bytes(const void* data, std::size_t n, std::uint64_t
 }
 
 // The message tags of the tool's exchanges.
-enum Tag : int { BAND = 1, BAND_VERDICT, BAND_IDS, MERGED_POINTS, MERGED_TRIANGLES, OUTPUT_NAME, FIT };
+enum Tag : int {
+  BAND = 1,
+  BAND_VERDICT,
+  BAND_IDS,
+  MERGED_POINTS,
+  MERGED_TRIANGLES,
+  OUTPUT_NAME,
+  FIT,
+  MERGED_SEGMENTS,
+  MERGED_MARKERS,
+  MERGED_REGIONS,
+  MERGED_SEGMENT_MARKERS
+};
 
 // Values are sent as bytes in chunks of at most 1 GiB.
 constexpr std::size_t chunk_bytes = std::size_t(1) << 30;

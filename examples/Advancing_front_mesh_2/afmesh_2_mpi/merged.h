@@ -15,6 +15,11 @@
 
 namespace afmesh_2_mpi {
 
+inline bool ends_with_off(const std::string& out)
+{
+  return out.size() >= 4 && out.compare(out.size() - 4, 4, ".off") == 0;
+}
+
 inline std::vector<double> owned_points(const Rank_mesh& m)
 {
   std::vector<double> xy;
@@ -36,15 +41,92 @@ inline std::vector<std::uint64_t> numbered_triangles(const Rank_mesh& m)
   return t;
 }
 
-// Rank 0 writes `out` (.off or .vtu); the others send it their shares.
+inline std::vector<std::uint64_t> numbered_segments(const Rank_mesh& m)
+{
+  std::vector<std::uint64_t> s;
+  s.reserve(2 * m.tags.segments.size());
+  for(const auto& seg : m.tags.segments)
+    for(std::uint64_t v : seg) s.push_back(m.global_id[v]);
+  return s;
+}
+
+inline std::vector<std::int32_t> owned_markers(const Rank_mesh& m)
+{
+  std::vector<std::int32_t> k;
+  k.reserve(m.owned_count);
+  for(std::size_t i = 0; i < m.points.size(); ++i)
+    if(m.owned[i]) k.push_back(std::int32_t(m.tags.markers[i]));
+  return k;
+}
+
+// The tags of the merged .vtu (rank 0): its own share's, then each other
+// rank's as it sends them, one array at a time (the ranks send in the
+// order of the arrays).
+inline Vtu_tags merged_tags(std::ostream& os, bool binary, const Rank_mesh& m, int ranks,
+                            const std::vector<std::uint64_t>& segments_per_rank)
+{
+  Vtu_tags v;
+  v.segments_per_rank = segments_per_rank;
+  v.regions = m.tags.regions;
+  auto flush = [&os](std::string& raw) {
+    os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
+    raw.clear();
+  };
+  v.segments = [&os, &m, binary, ranks, flush](std::string& raw, bool wide) {
+    for(int r = 0; r < ranks; ++r) {
+      const std::vector<std::uint64_t> s =
+        r == 0 ? numbered_segments(m) : receive_vector<std::uint64_t>(r, MERGED_SEGMENTS);
+      for(std::size_t i = 0; i < s.size(); ++i) put_index(os, raw, binary, wide, s[i], i % 2 == 1 ? '\n' : ' ');
+      flush(raw);
+    }
+  };
+  v.point_markers = [&os, &m, binary, ranks, flush](std::string& raw) {
+    for(int r = 0; r < ranks; ++r) {
+      for(std::int32_t k : r == 0 ? owned_markers(m) : receive_vector<std::int32_t>(r, MERGED_MARKERS))
+        put_value(os, raw, binary, k);
+      flush(raw);
+    }
+  };
+  v.triangle_regions = [&os, &m, binary, ranks, flush](std::string& raw) {
+    for(int r = 0; r < ranks; ++r) {
+      for(double a : r == 0 ? m.tags.regions_of_triangles : receive_vector<double>(r, MERGED_REGIONS))
+        put_value(os, raw, binary, a);
+      flush(raw);
+    }
+  };
+  v.segment_markers = [&os, &m, binary, ranks, flush](std::string& raw) {
+    for(int r = 0; r < ranks; ++r) {
+      const std::vector<std::int32_t> k =
+        r == 0 ? std::vector<std::int32_t>(m.tags.segment_markers.begin(), m.tags.segment_markers.end())
+               : receive_vector<std::int32_t>(r, MERGED_SEGMENT_MARKERS);
+      for(std::int32_t marker : k) put_value(os, raw, binary, marker);
+      flush(raw);
+    }
+  };
+  return v;
+}
+
+// Rank 0 writes `out` (.off or .vtu: with the segments, markers and
+// regions as afmesh_2 writes them); the others send it their shares.
 // Throws std::runtime_error (rank 0) when the file cannot be written.
 inline void write_merged(const std::string& out, const Rank_mesh& m, int rank, int ranks, bool binary)
 {
   const std::vector<std::uint64_t> triangles_per_rank = gather_to_root<std::uint64_t>(m.triangles.size(), ranks);
+  const std::vector<std::uint64_t> segments_per_rank = gather_to_root<std::uint64_t>(m.tags.segments.size(), ranks);
   const std::uint64_t nv = sum_over_ranks(m.owned_count);
+  const bool vtu = !ends_with_off(out);
   if(rank != 0) {
     send_vector(owned_points(m), 0, MERGED_POINTS);
     send_vector(numbered_triangles(m), 0, MERGED_TRIANGLES);
+    if(vtu) {
+      send_vector(numbered_segments(m), 0, MERGED_SEGMENTS);
+      // in the order rank 0 writes the arrays (write_vtu()): a large
+      // message waits until rank 0 takes it
+      send_vector(owned_markers(m), 0, MERGED_MARKERS);
+      std::vector<std::int32_t> segment_markers(m.tags.segment_markers.begin(), m.tags.segment_markers.end());
+      send_vector(segment_markers, 0, MERGED_SEGMENT_MARKERS);
+      if(m.tags.regions) send_vector(m.tags.regions_of_triangles, 0, MERGED_REGIONS);
+    }
     return;
   }
   auto points_of = [&](int r) { return r == 0 ? owned_points(m) : receive_vector<double>(r, MERGED_POINTS); };
@@ -53,7 +135,7 @@ inline void write_merged(const std::string& out, const Rank_mesh& m, int rank, i
   };
   std::ofstream os(out, std::ios::binary);
   os << std::setprecision(17);
-  if(out.size() >= 4 && out.compare(out.size() - 4, 4, ".off") == 0) {
+  if(!vtu) {
     std::uint64_t nt = 0;
     for(std::uint64_t n : triangles_per_rank) nt += n;
     os << "OFF\n" << nv << ' ' << nt << " 0\n";
@@ -92,7 +174,7 @@ inline void write_merged(const std::string& out, const Rank_mesh& m, int rank, i
                   raw.clear();
                 }
               },
-              {});
+              {}, merged_tags(os, binary, m, ranks, segments_per_rank));
   }
   os.close();
   if(os.fail()) throw std::runtime_error("cannot write " + out);

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -58,9 +59,12 @@ std::pair<double, double> key_of(const Point& p)
 }
 
 // Plans `ranks` parts of the domain of `in` and makes the cuts in in.cdt
-// (the markers follow the segments they split).
+// (the markers follow the segments they split, and `on_split_segment(a, b,
+// v)` is told that the segment a-b was split at v).
 template <class K>
-Decomposition<K> decompose(afmesh_2::Input<K>& in, int ranks)
+Decomposition<K> decompose(afmesh_2::Input<K>& in, int ranks,
+                           const std::function<void(const typename K::Point_2&, const typename K::Point_2&,
+                                                    const typename K::Point_2&)>& on_split_segment = {})
 {
   typedef CDT<K> Cdt;
   typedef CGAL::Delaunay_mesher_2<Cdt, CGAL::Delaunay_mesh_criteria_2<Cdt> > Mesh_2_mesher;
@@ -68,8 +72,11 @@ Decomposition<K> decompose(afmesh_2::Input<K>& in, int ranks)
   const std::vector<typename K::Point_2> seeds(in.seeds.begin(), in.seeds.end());
   // holes are given by seeds (mark = false), as afmesh_2 does
   Mesh_2_mesher::mark_facets(in.cdt, seeds.begin(), seeds.end(), false);
-  auto on_split = [&in](typename Cdt::Vertex_handle a, typename Cdt::Vertex_handle b,
-                        typename Cdt::Vertex_handle v) { in.tags.split_constraint(a, b, v); };
+  auto on_split = [&in, &on_split_segment](typename Cdt::Vertex_handle a, typename Cdt::Vertex_handle b,
+                                           typename Cdt::Vertex_handle v) {
+    in.tags.split_constraint(a, b, v);
+    if(on_split_segment) on_split_segment(a->point(), b->point(), v->point());
+  };
   if(ranks > 1 && in.cdt.dimension() == 2) d.plan = AFM::internal::plan_strips(in.cdt, in.sizing, std::size_t(ranks));
   if(!d.plan.cuts.empty()) {
     try {
@@ -214,35 +221,60 @@ void build_part(const afmesh_2::Input<K>& in, const Decomposition<K>& d, std::si
                             part_cdt);
 }
 
-// The part built in `part_cdt` meshed (in streaming mode when `sink` is
-// given); returns the mesher's code.
 template <class K>
-AFM::Mesh_return_code mesh_part(const afmesh_2::Options& opt, const afmesh_2::Input<K>& in, CDT<K>& part_cdt,
-                                Sink<K>* sink, AFM::Statistics& st)
+using Part_mesher = CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> >;
+
+// The checkpoints of a part meshed in streaming mode (afmesh_2's restart
+// facility, the mesher's own): to `file` after every `every` more
+// triangles (0: none), stopping after the first with `stop`; `resume`
+// continues from `file` instead of starting. `user_data` is stored in them
+// (the run's digest).
+struct Part_checkpoints
 {
-  CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> > mesher(part_cdt, in.sizing);
-  mesher.use_domain_marks();
+  std::size_t every = 0;
+  std::string file, user_data;
+  bool stop = false, resume = false;
+};
+
+// Meshes with `mesher`, set up for its part or for the whole domain.
+template <class K>
+AFM::Mesh_return_code mesh_with(const afmesh_2::Options& opt, Part_mesher<K>& mesher, Sink<K>* sink,
+                                const Part_checkpoints& ck, AFM::Statistics& st)
+{
   if(sink != nullptr) mesher.set_output_sink(sink);
   mesher.set_pocket_priority(!opt.no_pocket_priority);
+  // the mesher's state, the pocket priority with it, from the checkpoint
+  if(ck.resume) mesher.resume(ck.file);
+  if(ck.every > 0) mesher.set_checkpoint(ck.every, ck.file, ck.user_data, ck.stop);
   const AFM::Mesh_return_code rc = mesher.refine_mesh();
   st = mesher.statistics();
   return rc;
+}
+
+// The part built in `part_cdt` meshed (in streaming mode when `sink` is
+// given); returns the mesher's code. A resumed part is meshed in a
+// triangulation of its own: its state is the checkpoint's.
+template <class K>
+AFM::Mesh_return_code mesh_part(const afmesh_2::Options& opt, const afmesh_2::Input<K>& in, CDT<K>& part_cdt,
+                                Sink<K>* sink, const Part_checkpoints& ck, AFM::Statistics& st)
+{
+  CDT<K> resumed;
+  Part_mesher<K> mesher(ck.resume ? resumed : part_cdt, in.sizing);
+  if(!ck.resume) mesher.use_domain_marks();
+  return mesh_with<K>(opt, mesher, sink, ck, st);
 }
 
 // The domain in one part: meshed as afmesh_2 does on one thread (in
 // streaming mode when `sink` is given).
 template <class K>
 AFM::Mesh_return_code mesh_whole(const afmesh_2::Options& opt, afmesh_2::Input<K>& in, Sink<K>* sink,
-                                 AFM::Statistics& st)
+                                 const Part_checkpoints& ck, AFM::Statistics& st)
 {
-  CGAL::Advancing_front_mesher_2<CDT<K>, afmesh_2::Cli_sizing_field<K> > mesher(in.cdt, in.sizing);
-  if(sink != nullptr) mesher.set_output_sink(sink);
+  CDT<K> resumed;
+  Part_mesher<K> mesher(ck.resume ? resumed : in.cdt, in.sizing);
   mesher.set_seeds(in.seeds.begin(), in.seeds.end());
   mesher.set_constraint_splitting(false); // load_input() did it
-  mesher.set_pocket_priority(!opt.no_pocket_priority);
-  const AFM::Mesh_return_code rc = mesher.refine_mesh();
-  st = mesher.statistics();
-  return rc;
+  return mesh_with<K>(opt, mesher, sink, ck, st);
 }
 
 } // namespace afmesh_2_mpi

@@ -29,8 +29,21 @@
 
 namespace afmesh_2_mpi {
 
+// The tags of a share held in memory (tags.h): the points' markers, the
+// triangles' region attributes (when the input has regions) and the
+// segments, by the share's local indices.
+struct Share_tagging
+{
+  bool regions = false;
+  std::vector<int> markers;
+  std::vector<double> regions_of_triangles;
+  std::vector<std::array<std::uint64_t, 2> > segments;
+  std::vector<int> segment_markers;
+};
+
 struct Rank_mesh
 {
+  Share_tagging tags;
   std::vector<std::array<double, 2> > points;
   std::vector<std::array<std::uint64_t, 3> > triangles; // by local point index
   std::vector<char> owned;
@@ -160,10 +173,10 @@ namespace vtu = CGAL::Advancing_front_mesh_2::IO::internal;
 // Connectivity and offsets are Int32 when every value fits (a piece of
 // fewer than 715 million triangles), Int64 otherwise: a third less disk for
 // the pieces of a large mesh.
-inline bool wide_indices(std::uint64_t nv, std::uint64_t nt)
+inline bool wide_indices(std::uint64_t nv, std::uint64_t connectivity_length)
 {
   const std::uint64_t int32_max = 2147483647u;
-  return nv > int32_max || 3 * nt > int32_max;
+  return nv > int32_max || connectivity_length > int32_max;
 }
 
 // Appends index `v` to a binary array, or prints it.
@@ -174,19 +187,44 @@ inline void put_index(std::ostream& os, std::string& raw, bool binary, bool wide
   else vtu::vtu_append_raw(raw, std::int32_t(v));
 }
 
+// Appends a value to a binary array, or prints it on a line.
+template <class T>
+void put_value(std::ostream& os, std::string& raw, bool binary, T v)
+{
+  if(binary) vtu::vtu_append_raw(raw, v);
+  else os << v << '\n';
+}
+
+// What a .vtu holds besides its points and triangles, as afmesh_2 writes
+// it: the segments as lines (type 3) after the triangles, point data
+// `marker`, cell data `marker` (0 for the triangles) and, when the input
+// has regions, cell data `region` (0 for the segments). The functions
+// append the values (binary) or print them (ASCII), in order: `segments`
+// two indices each (Int64 when `wide`, as the connectivity), the markers
+// of the points, the attributes of the triangles, the markers of the
+// segments.
+struct Vtu_tags
+{
+  std::vector<std::uint64_t> segments_per_rank;
+  bool regions = false;
+  std::function<void(std::string&, bool)> segments;
+  std::function<void(std::string&)> point_markers, triangle_regions, segment_markers;
+};
+
 // The arrays of a .vtu of `nv` points and the triangles counted per rank in
 // `triangles_per_rank`: `points(raw)` and `connectivity(raw, wide)` append
 // the values (binary; Int64 indices when `wide`, else Int32) or print them
 // (ASCII), and so does `global_ids(raw)` (when set); the partition of each
-// triangle is its rank, counted from `first_rank`.
+// cell is its rank, counted from `first_rank`; `tags` the rest.
 template <class Points, class Connectivity>
 void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64_t>& triangles_per_rank,
                int first_rank, bool binary, const Points& points, const Connectivity& connectivity,
-               const std::function<void(std::string&)>& global_ids)
+               const std::function<void(std::string&)>& global_ids, const Vtu_tags& tags)
 {
-  std::uint64_t nt = 0;
+  std::uint64_t nt = 0, ns = 0;
   for(std::uint64_t n : triangles_per_rank) nt += n;
-  const bool wide = wide_indices(nv, nt);
+  for(std::uint64_t n : tags.segments_per_rank) ns += n;
+  const bool wide = wide_indices(nv, 3 * nt + 2 * ns);
   const std::uint64_t index_bytes = wide ? 8 : 4;
   const std::string index_type = wide ? "Int64" : "Int32";
   std::string raw;
@@ -194,28 +232,36 @@ void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64
     os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
     raw.clear();
   };
+  auto flush_if_full = [&] {
+    if(raw.size() > (1u << 20)) flush();
+  };
   std::vector<vtu::Vtu_array> arrays;
   arrays.push_back({vtu::Vtu_section::POINTS, "type=\"Float64\" NumberOfComponents=\"3\"", 24 * nv, [&] {
     points(raw);
     flush();
   }});
   arrays.push_back({vtu::Vtu_section::CELLS, "type=\"" + index_type + "\" Name=\"connectivity\"",
-                    3 * index_bytes * nt, [&] {
+                    index_bytes * (3 * nt + 2 * ns), [&] {
                       connectivity(raw, wide);
                       flush();
+                      if(tags.segments) tags.segments(raw, wide);
+                      flush();
                     }});
-  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"" + index_type + "\" Name=\"offsets\"", index_bytes * nt, [&] {
-    for(std::uint64_t t = 1; t <= nt; ++t) {
-      put_index(os, raw, binary, wide, 3 * t, '\n');
-      if(raw.size() > (1u << 20)) flush();
-    }
-    flush();
-  }});
-  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"UInt8\" Name=\"types\"", nt, [&] {
-    for(std::uint64_t t = 0; t < nt; ++t) {
-      if(binary) raw.push_back(char(5));
-      else os << "5\n";
-      if(raw.size() > (1u << 20)) flush();
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"" + index_type + "\" Name=\"offsets\"",
+                    index_bytes * (nt + ns), [&] {
+                      for(std::uint64_t t = 1; t <= nt; ++t) {
+                        put_index(os, raw, binary, wide, 3 * t, '\n');
+                        flush_if_full();
+                      }
+                      for(std::uint64_t i = 1; i <= ns; ++i) put_index(os, raw, binary, wide, 3 * nt + 2 * i, '\n');
+                      flush();
+                    }});
+  arrays.push_back({vtu::Vtu_section::CELLS, "type=\"UInt8\" Name=\"types\"", nt + ns, [&] {
+    for(std::uint64_t t = 0; t < nt + ns; ++t) {
+      const char type = t < nt ? 5 : 3;
+      if(binary) raw.push_back(type);
+      else os << int(type) << '\n';
+      flush_if_full();
     }
     flush();
   }});
@@ -224,19 +270,66 @@ void write_vtu(std::ostream& os, std::uint64_t nv, const std::vector<std::uint64
       global_ids(raw);
       flush();
     }});
-  arrays.push_back({vtu::Vtu_section::CELL_DATA, "type=\"Int32\" Name=\"partition\"", 4 * nt, [&] {
-    for(std::size_t r = 0; r < triangles_per_rank.size(); ++r)
-      for(std::uint64_t t = 0; t < triangles_per_rank[r]; ++t) {
-        if(binary) vtu::vtu_append_raw(raw, std::int32_t(first_rank + int(r)));
-        else os << first_rank + int(r) << '\n';
-        if(raw.size() > (1u << 20)) flush();
-      }
+  if(tags.point_markers)
+    arrays.push_back({vtu::Vtu_section::POINT_DATA, "type=\"Int32\" Name=\"marker\"", 4 * nv, [&] {
+      tags.point_markers(raw);
+      flush();
+    }});
+  arrays.push_back({vtu::Vtu_section::CELL_DATA, "type=\"Int32\" Name=\"partition\"", 4 * (nt + ns), [&] {
+    for(const std::vector<std::uint64_t>* counts : {&triangles_per_rank, &tags.segments_per_rank})
+      for(std::size_t r = 0; r < counts->size(); ++r)
+        for(std::uint64_t t = 0; t < (*counts)[r]; ++t) {
+          put_value(os, raw, binary, std::int32_t(first_rank + int(r)));
+          flush_if_full();
+        }
     flush();
   }});
+  if(tags.point_markers) {
+    arrays.push_back({vtu::Vtu_section::CELL_DATA, "type=\"Int32\" Name=\"marker\"", 4 * (nt + ns), [&] {
+      for(std::uint64_t t = 0; t < nt; ++t) {
+        put_value(os, raw, binary, std::int32_t(0));
+        flush_if_full();
+      }
+      flush();
+      if(tags.segment_markers) tags.segment_markers(raw);
+      flush();
+    }});
+    if(tags.regions)
+      arrays.push_back({vtu::Vtu_section::CELL_DATA, "type=\"Float64\" Name=\"region\"", 8 * (nt + ns), [&] {
+        tags.triangle_regions(raw);
+        flush();
+        for(std::uint64_t i = 0; i < ns; ++i) put_value(os, raw, binary, 0.);
+        flush();
+      }});
+  }
   Stream_out out{os};
   // ParaView takes the global numbers for what they are when told
-  vtu::vtu_write(out, nv, nt, arrays, binary,
+  vtu::vtu_write(out, nv, nt + ns, arrays, binary,
                  {global_ids ? std::string(" GlobalIds=\"GlobalNodeId\"") : std::string(), std::string()});
+}
+
+// The tags of one piece in memory, written by local indices.
+inline Vtu_tags vtu_tags(std::ostream& os, bool binary, const Share_tagging& t)
+{
+  Vtu_tags v;
+  v.segments_per_rank = {t.segments.size()};
+  v.regions = t.regions;
+  v.segments = [&os, &t, binary](std::string& raw, bool wide) {
+    for(const auto& s : t.segments) {
+      put_index(os, raw, binary, wide, s[0], ' ');
+      put_index(os, raw, binary, wide, s[1], '\n');
+    }
+  };
+  v.point_markers = [&os, &t, binary](std::string& raw) {
+    for(int k : t.markers) put_value(os, raw, binary, std::int32_t(k));
+  };
+  v.triangle_regions = [&os, &t, binary](std::string& raw) {
+    for(double a : t.regions_of_triangles) put_value(os, raw, binary, a);
+  };
+  v.segment_markers = [&os, &t, binary](std::string& raw) {
+    for(int k : t.segment_markers) put_value(os, raw, binary, std::int32_t(k));
+  };
+  return v;
 }
 
 inline void append_points(std::ostream& os, std::string& raw, bool binary,
@@ -266,14 +359,17 @@ inline std::string base_name(const std::string& path)
 
 // The collection file OUT.pvtu (rank 0): the pieces of the ranks that have
 // triangles (meshio cannot read a piece without cells).
-inline void write_collection(const std::string& pvtu, const std::vector<std::uint64_t>& triangles_per_rank, int ranks)
+inline void write_collection(const std::string& pvtu, const std::vector<std::uint64_t>& triangles_per_rank, int ranks,
+                             bool regions)
 {
   std::ofstream os(pvtu);
   os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\""
      << (vtu::vtu_host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
      << "<PUnstructuredGrid GhostLevel=\"0\">\n"
-     << "<PPointData GlobalIds=\"GlobalNodeId\"><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/></PPointData>\n"
-     << "<PCellData><PDataArray type=\"Int32\" Name=\"partition\"/></PCellData>\n"
+     << "<PPointData GlobalIds=\"GlobalNodeId\"><PDataArray type=\"Int64\" Name=\"GlobalNodeId\"/>"
+     << "<PDataArray type=\"Int32\" Name=\"marker\"/></PPointData>\n"
+     << "<PCellData><PDataArray type=\"Int32\" Name=\"partition\"/><PDataArray type=\"Int32\" Name=\"marker\"/>"
+     << (regions ? "<PDataArray type=\"Float64\" Name=\"region\"/>" : "") << "</PCellData>\n"
      << "<PPoints><PDataArray type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
   for(int r = 0; r < ranks; ++r)
     if(triangles_per_rank[std::size_t(r)] > 0) os << "<Piece Source=\"" << base_name(piece_name(pvtu, r)) << "\"/>\n";
@@ -301,11 +397,12 @@ inline void write_piece(const std::string& pvtu, const Rank_mesh& m, int rank, i
               },
               [&](std::string& raw) {
                 for(std::uint64_t id : m.global_id) put_index(os, raw, binary, true, id, '\n');
-              });
+              },
+              vtu_tags(os, binary, m.tags));
     os.close();
     if(os.fail()) throw std::runtime_error("cannot write " + name);
   }
-  if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks);
+  if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks, m.tags.regions);
 }
 
 } // namespace afmesh_2_mpi

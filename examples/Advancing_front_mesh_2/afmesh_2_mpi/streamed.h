@@ -12,21 +12,34 @@
 // pass each, its vertices renumbered to leave out those only the band sent
 // down used (bit sets with counts: a few bits per vertex in memory).
 //
+// What the sink has received (the counts, the scratch files' sizes, the
+// used bits, the held triangles) is its state: written to a kept part file
+// once the part is meshed, and to a side file at each of the mesher's
+// checkpoints, from which a later run continues (--resume).
+//
+// The sink also finds the segments among the streamed triangles' edges and
+// their region attributes (tags.h).
+//
 // Memory: the mesher's front and unfinished triangles, the held triangles
-// (a few hundred bytes per interface point), and about 3 bits per vertex.
-// Disk: 28 bytes per triangle of scratch until the piece is written.
+// (a few hundred bytes per interface point), about 4 bits per vertex, and
+// 16 bytes per input vertex and 24 per segment. Disk: 28 bytes per
+// triangle of scratch (36 when the input has regions) until the piece is
+// written.
 #ifndef AFMESH_2_MPI_STREAMED_H
 #define AFMESH_2_MPI_STREAMED_H
 
-#include "pieces.h"
+#include "tags.h"
 
+#include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_files.h>
 #include <CGAL/Advancing_front_mesh_2/Mesh_sink_2.h>
 
+#include <algorithm>
 #include <array>
 #include <bitset>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iterator>
 #include <fstream>
 #include <set>
@@ -87,81 +100,135 @@ private:
   std::uint64_t size_ = 0, total_ = 0;
 };
 
-// A scratch file written through a buffer; removed when destroyed.
+// A scratch file written through the library's streaming buffer (which
+// can make it durable for a checkpoint); removed when destroyed unless kept.
 class Scratch_file
 {
 public:
-  explicit Scratch_file(const std::string& name) : name_(name) {}
+  explicit Scratch_file(const std::string& name) : file_(name) {}
   ~Scratch_file()
   {
-    if(os_.is_open()) os_.close();
-    if(opened_ && !kept_) std::remove(name_.c_str());
-  }
-  // left on disk at the end (a part kept for --resume)
-  void keep(bool on = true) { kept_ = on; }
-  // the bytes written so far
-  std::uint64_t size() const { return written_; }
-  // takes over the file a previous run left, which must have `bytes`
-  bool adopt(std::uint64_t bytes)
-  {
-    std::ifstream is(name_.c_str(), std::ios::in | std::ios::binary | std::ios::ate);
-    if(!is || std::uint64_t(is.tellg()) != bytes) return false;
-    opened_ = true;
-    written_ = bytes;
-    return true;
+    file_.abandon();
+    if(exists_ && !kept_) std::remove(file_.path().c_str());
   }
   Scratch_file(const Scratch_file&) = delete;
   Scratch_file& operator=(const Scratch_file&) = delete;
-  const std::string& name() const { return name_; }
+  // left on disk at the end (a part kept for --resume, or checkpointed)
+  void keep(bool on = true) { kept_ = on; }
+  // the bytes written so far
+  std::uint64_t size() const { return file_.size(); }
+  const std::string& name() const { return file_.path(); }
+  // Takes over the file a previous run left, cut back to `bytes`: it must
+  // have exactly that many (a kept part) or at least (a checkpoint, after
+  // which the interrupted run went on writing). False, and the file
+  // untouched, when it has not.
+  bool fits(std::uint64_t bytes, bool exact) const
+  {
+    std::error_code ec;
+    const std::uintmax_t on_disk = std::filesystem::file_size(name(), ec);
+    if(ec) return bytes == 0; // never written
+    return on_disk >= bytes && (!exact || on_disk == bytes);
+  }
+  bool adopt(std::uint64_t bytes, bool exact)
+  {
+    if(!fits(bytes, exact)) return false;
+    std::error_code ec;
+    const std::uintmax_t on_disk = std::filesystem::file_size(name(), ec);
+    if(ec) return true; // never written: created by the first put()
+    if(on_disk != bytes) {
+      std::filesystem::resize_file(name(), bytes, ec);
+      if(ec) throw std::runtime_error("cannot cut " + name() + " back to the checkpoint");
+    }
+    file_.append(bytes);
+    exists_ = true;
+    return true;
+  }
   template <class T>
   void put(const T* values, std::size_t n)
   {
-    if(!opened_) {
-      os_.open(name_.c_str(), std::ios::out | std::ios::binary | std::ios::trunc);
-      opened_ = true;
+    if(!exists_) {
+      file_.create();
+      exists_ = true;
     }
-    buffer_.append(reinterpret_cast<const char*>(values), n * sizeof(T));
-    written_ += n * sizeof(T);
-    if(buffer_.size() >= (std::size_t(1) << 22)) flush();
+    file_.put(reinterpret_cast<const char*>(values), n * sizeof(T));
   }
-  // everything put so far on disk; throws std::runtime_error when it is not
+  // everything put so far durable on disk (a checkpoint)
+  void sync()
+  {
+    if(exists_ && file_.is_open()) guarded([&] { file_.sync(); });
+  }
+  // everything put so far durably on disk; throws std::runtime_error when
+  // it is not
   void close()
   {
-    if(!opened_) return;
-    flush();
-    os_.close();
-    if(os_.fail()) throw std::runtime_error("cannot write " + name_ + " (is the disk full?)");
+    guarded([&] { file_.close(true); });
   }
   // reads the file back, `n` values of type T at a time, into `f(values, n)`
   template <class T, class F>
   void read(std::size_t n, const F& f) const
   {
-    if(!opened_) return;
-    std::ifstream is(name_.c_str(), std::ios::in | std::ios::binary);
+    if(!exists_) return;
+    std::ifstream is(name().c_str(), std::ios::in | std::ios::binary);
     std::vector<T> values(n);
     while(is) {
       is.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(n * sizeof(T)));
       const std::size_t got = std::size_t(is.gcount()) / sizeof(T);
       if(got > 0) f(values.data(), got);
     }
-    if(is.bad()) throw std::runtime_error("cannot read " + name_);
+    if(is.bad()) throw std::runtime_error("cannot read " + name());
   }
 
 private:
-  void flush()
+  template <class F>
+  void guarded(const F& f)
   {
-    os_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-    if(os_.fail()) throw std::runtime_error("cannot write " + name_ + " (is the disk full?)");
+    try {
+      f();
+    } catch(const std::runtime_error& e) {
+      throw std::runtime_error(std::string(e.what()) + " (is the disk full?)");
+    }
   }
-  std::string name_, buffer_;
-  std::ofstream os_;
-  bool opened_ = false, kept_ = false;
-  std::uint64_t written_ = 0;
+  AFM::IO::internal::Streaming_file file_;
+  bool exists_ = false, kept_ = false;
 };
 
+// `bytes` in `file`, durably: written to file.tmp, synced, then renamed,
+// so that the file is either whole or as it was.
+inline void write_durably(const std::string& file, const std::string& bytes)
+{
+  const std::string tmp = file + ".tmp";
+  {
+    AFM::IO::internal::Streaming_file f(tmp);
+    try {
+      f.create();
+      f.put(bytes);
+      f.close(true);
+    } catch(const std::runtime_error&) {
+      f.abandon();
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot write " + file);
+    }
+  }
+  if(std::rename(tmp.c_str(), file.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write " + file);
+  }
+  AFM::IO::internal::streaming_sync_directories({file});
+}
+
+// The bytes of `file`; false when it cannot be read.
+inline bool read_whole(const std::string& file, std::string& bytes)
+{
+  std::ifstream is(file.c_str(), std::ios::in | std::ios::binary);
+  if(!is) return false;
+  bytes.assign(std::istreambuf_iterator<char>(is), std::istreambuf_iterator<char>());
+  return !is.bad();
+}
+
 // The first bytes of a kept part's file.
-constexpr const char* part_file_magic = "afmesh_2_mpi kept part 1\n";
+constexpr const char* part_file_magic = "afmesh_2_mpi kept part 2\n";
+// The sink's state stored in the mesher's checkpoint.
+constexpr const char* checkpoint_state_magic = "afmesh_2_mpi part checkpoint 1\n";
 
 // The triangles held back near the cuts start at this many interface sizes
 // from the cut: the largest band the merge may try (bands.h).
@@ -185,8 +252,13 @@ public:
 
   // The sink of part `part` of `d` (none: `part` >= d.parts), whose input
   // (before meshing) is `part_cdt`; the scratch files start with `stem`.
-  Part_stream(const Decomposition<K>& d, std::size_t part, const CDT<K>& part_cdt, const std::string& stem)
-      : d_(d), points_(stem + ".points.tmp"), triangles_(stem + ".triangles.tmp")
+  // `run` is the digest of the run's decomposition and options: a later
+  // run takes what this one kept only if it has the same.
+  // `tags` finds the markers and regions (and outlives the sink).
+  Part_stream(const Decomposition<K>& d, std::size_t part, const CDT<K>& part_cdt, const std::string& stem,
+              std::uint64_t run, Share_tags<K>& tags)
+      : d_(d), stem_(stem), run_(run), tags_(tags), points_(stem + ".points.tmp"),
+        triangles_(stem + ".triangles.tmp"), regions_(stem + ".regions.tmp")
   {
     if(part >= d.parts) return;
     if(part >= 1) cuts_.push_back(part - 1);
@@ -207,6 +279,13 @@ public:
     const double xy[2] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
     points_.put(xy, 2);
     used_.push_back_zero();
+    // the input vertices, for the segments
+    input_bits_.push_back_zero();
+    const std::size_t ordinal = tags_.input_vertex(xy[0], xy[1]);
+    if(ordinal != Share_tags<K>::none) {
+      input_bits_.set(i);
+      input_vertices_.push_back({{std::uint64_t(i), std::uint64_t(ordinal)}});
+    }
   }
 
   void add_finished_triangle(std::size_t i, std::size_t j, std::size_t k, const Point& a, const Point& b,
@@ -223,6 +302,18 @@ public:
       }
     const std::uint32_t v[3] = {std::uint32_t(i), std::uint32_t(j), std::uint32_t(k)};
     triangles_.put(v, 3);
+    if(tags_.has_regions()) {
+      const double attribute = tags_.region_attribute(a, b, c);
+      regions_.put(&attribute, 1);
+    }
+    // a segment is an edge between two input vertices
+    if(int(input_bits_.test(i)) + int(input_bits_.test(j)) + int(input_bits_.test(k)) >= 2)
+      for(int e = 0; e < 3; ++e) {
+        const std::uint64_t from = e == 0 ? i : e == 1 ? j : k, to = e == 0 ? j : e == 1 ? k : i;
+        int marker = 0;
+        if(tags_.segment(input_ordinal(from), input_ordinal(to), marker))
+          segments_.push_back({{from, to, std::uint64_t(std::int64_t(marker))}});
+      }
     used_.set(i);
     used_.set(j);
     used_.set(k);
@@ -234,6 +325,7 @@ public:
   {
     points_.close();
     triangles_.close();
+    regions_.close();
   }
 
   // The band near cut `c` of width `width`: the held triangles with a
@@ -279,86 +371,131 @@ public:
     return ids;
   }
 
+  // The files a rank's part leaves beside its piece `stem` (OUT_<rank>.vtu)
+  // for a later run: the part once meshed, the mesher's checkpoint and the
+  // sink's state at the last two checkpoints (whichever the checkpoint
+  // names).
+  static std::string kept_part_file(const std::string& stem) { return stem + ".part"; }
+  static std::string checkpoint_file(const std::string& stem) { return stem + ".checkpoint"; }
+  static std::string checkpoint_sink_file(const std::string& stem, int generation)
+  {
+    return stem + ".checkpoint.sink" + std::to_string(generation);
+  }
+
   // The part kept for a later run (--stop-after-meshing, or a run that
-  // fails after this rank meshed): the scratch files stay, and `file` gets
-  // the rest (written whole, then renamed, so that it is either complete or
-  // absent), with the digest `run` of the run's decomposition and options.
-  void keep(const std::string& file, std::uint64_t run)
+  // fails after this rank meshed): the scratch files stay, and the kept
+  // part file gets the rest, durably (either whole or absent).
+  void keep()
+  {
+    keep_scratch();
+    write_durably(kept_part_file(stem_), state());
+  }
+
+  // The scratch files left on disk whatever happens (a checkpointed run
+  // resumes from them).
+  void keep_scratch()
   {
     points_.keep();
     triangles_.keep();
-    std::string b = part_file_magic;
-    auto put = [&b](const void* data, std::size_t n) { b.append(static_cast<const char*>(data), n); };
-    const std::uint64_t head[6] = {run, used_.size(), streamed_, points_.size(), triangles_.size(), held_.size()};
-    put(head, sizeof head);
-    put(used_.words().data(), used_.words().size() * 8);
-    for(const Held& h : held_) {
-      put(h.v.data(), 24);
-      for(const Point& p : h.p) {
-        const double xy[2] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
-        put(xy, 16);
-      }
-      put(&h.constraint_edges, 1);
-    }
-    const std::uint64_t sum = checksum(b);
-    put(&sum, 8);
-    const std::string tmp = file + ".tmp";
-    std::ofstream os(tmp.c_str(), std::ios::out | std::ios::binary | std::ios::trunc);
-    os.write(b.data(), static_cast<std::streamsize>(b.size()));
-    os.close();
-    if(os.fail() || std::rename(tmp.c_str(), file.c_str()) != 0) throw std::runtime_error("cannot write " + file);
+    regions_.keep();
   }
 
-  // Takes the part a previous run kept in `file` (and its scratch files)
-  // when that run had the digest `run`; false when there is none, or it is
-  // not whole, or it is another run's.
-  bool resume(const std::string& file, std::uint64_t run)
+  // Takes the part a previous run of the same command kept (and its scratch
+  // files); false when there is none, or it is not whole, or it is another
+  // run's.
+  bool resume()
   {
-    std::ifstream is(file.c_str(), std::ios::in | std::ios::binary);
-    if(!is) return false;
-    const std::string b((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
-    const std::size_t magic = std::strlen(part_file_magic);
-    if(b.size() < magic + 56 || b.compare(0, magic, part_file_magic) != 0) return false;
-    std::uint64_t sum = 0;
-    std::memcpy(&sum, b.data() + b.size() - 8, 8);
-    if(sum != checksum(b.substr(0, b.size() - 8))) return false;
-    std::size_t at = magic;
-    auto get = [&](void* data, std::size_t n) {
-      if(at + n > b.size() - 8) throw std::runtime_error(file + ": damaged");
-      std::memcpy(data, b.data() + at, n);
-      at += n;
-    };
-    std::uint64_t head[6];
-    get(head, sizeof head);
-    if(head[0] != run || !points_.adopt(head[3]) || !triangles_.adopt(head[4])) return false;
-    std::vector<std::uint64_t> words(std::size_t((head[1] + 63) / 64));
-    get(words.data(), words.size() * 8);
-    used_.assign(head[1], std::move(words));
-    streamed_ = head[2];
-    held_.clear();
-    for(std::uint64_t t = 0; t < head[5]; ++t) {
-      Held h;
-      get(h.v.data(), 24);
-      for(Point& p : h.p) {
-        double xy[2];
-        get(xy, 16);
-        p = Point(xy[0], xy[1]);
-      }
-      get(&h.constraint_edges, 1);
-      held_.push_back(h);
-    }
-    return at == b.size() - 8;
+    std::string b;
+    return read_whole(kept_part_file(stem_), b) && load(b, true);
   }
 
-  // the kept part removed, and the scratch files with the sink
-  void discard(const std::string& file)
+  // Called by the mesher at a checkpoint: the scratch files made durable,
+  // and the rest of the sink's state (the held triangles, the used bits:
+  // too large for the checkpoint itself) written to the side file of this
+  // generation, so that the previous checkpoint's stays whole until the
+  // mesher has renamed the new checkpoint into place. The checkpoint keeps
+  // the generation and the side file's checksum.
+  std::string checkpoint_state() override
   {
-    std::remove(file.c_str());
+    points_.sync();
+    triangles_.sync();
+    regions_.sync();
+    // (the mesher renames the checkpoint into place after this call; if
+    // that failed and the mesher went on, the next call would overwrite the
+    // side file the checkpoint on disk names: the tool stops at a
+    // Checkpoint_error instead)
+    const int generation = 1 - generation_;
+    const std::string b = state();
+    write_durably(checkpoint_sink_file(stem_, generation), b);
+    generation_ = generation;
+    return std::string(checkpoint_state_magic) + std::to_string(generation) + " " + std::to_string(checksum(b));
+  }
+
+  // Continues from the checkpoint whose sink state the mesher stored
+  // (Checkpoint_info::sink_state): the held triangles and the counts as
+  // they were then, the scratch files cut back to it. Throws
+  // std::runtime_error, the files untouched, when the side file is missing
+  // or not the one the checkpoint names.
+  void resume_checkpoint(const std::string& sink_state)
+  {
+    const std::size_t magic = std::strlen(checkpoint_state_magic);
+    int generation = -1;
+    unsigned long long sum = 0;
+    if(sink_state.compare(0, magic, checkpoint_state_magic) != 0 ||
+       std::sscanf(sink_state.c_str() + magic, "%d %llu", &generation, &sum) != 2 ||
+       (generation != 0 && generation != 1))
+      throw std::runtime_error(checkpoint_file(stem_) + ": not a checkpoint of afmesh_2_mpi");
+    const std::string side = checkpoint_sink_file(stem_, generation);
+    std::string b;
+    if(!read_whole(side, b) || checksum(b) != sum)
+      throw std::runtime_error(side + ": missing, or not the state the checkpoint " + checkpoint_file(stem_) +
+                               " was written with");
+    if(!load(b, false))
+      throw std::runtime_error(checkpoint_file(stem_) + ": the scratch files beside it (" + points_.name() + ", " +
+                               triangles_.name() + ", " + regions_.name() + ") are missing or shorter than at the "
+                               "checkpoint");
+    generation_ = generation;
+    keep_scratch();
+  }
+
+  // Everything this part left for a later run removed: the kept part, the
+  // checkpoints, and the scratch files with the sink.
+  void discard()
+  {
+    std::remove(kept_part_file(stem_).c_str());
+    std::remove((kept_part_file(stem_) + ".tmp").c_str());
+    discard_checkpoints();
     points_.keep(false);
     triangles_.keep(false);
+    regions_.keep(false);
+  }
+
+  // This run meshes the part from its start: what a previous run left of
+  // it is removed (a scratch file of regions from a run with other input
+  // files too, which no put() of this run would empty).
+  void start_anew()
+  {
+    std::remove(kept_part_file(stem_).c_str());
+    discard_checkpoints();
+    if(!tags_.has_regions()) std::remove(regions_.name().c_str());
+  }
+
+  // A previous run's checkpoint of this part removed.
+  void discard_checkpoints()
+  {
+    for(const std::string& f :
+        {checkpoint_file(stem_), checkpoint_sink_file(stem_, 0), checkpoint_sink_file(stem_, 1)}) {
+      std::remove(f.c_str());
+      std::remove((f + ".tmp").c_str()); // a run killed while writing it
+    }
   }
 
   const std::vector<Held>& held() const { return held_; }
+  // the segments found in the streamed triangles: their ends (the mesher's
+  // numbers) and marker
+  const std::vector<std::array<std::uint64_t, 3> >& segments() const { return segments_; }
+  const Scratch_file& regions_file() const { return regions_; }
+  Share_tags<K>& tags() const { return tags_; }
   Counted_bits& used() { return used_; }
   std::uint64_t vertices() const { return used_.size(); }
   std::uint64_t streamed_triangles() const { return streamed_; }
@@ -382,16 +519,126 @@ private:
     return key_of(q) < key_of(p) ? edge_key(q, p) : edge_key(p, q);
   }
 
+  // What the sink has received, as bytes: the run's digest, the counts,
+  // the scratch files' sizes, the used bits and the held triangles, then a
+  // checksum of all that.
+  std::string state() const
+  {
+    std::string b = part_file_magic;
+    auto put = [&b](const void* data, std::size_t n) { b.append(static_cast<const char*>(data), n); };
+    const std::uint64_t head[9] = {run_,           used_.size(),           streamed_,
+                                   points_.size(), triangles_.size(),      held_.size(),
+                                   regions_.size(), input_vertices_.size(), segments_.size()};
+    put(head, sizeof head);
+    put(input_vertices_.data(), input_vertices_.size() * 16);
+    put(segments_.data(), segments_.size() * 24);
+    put(used_.words().data(), used_.words().size() * 8);
+    for(const Held& h : held_) {
+      put(h.v.data(), 24);
+      for(const Point& p : h.p) {
+        const double xy[2] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+        put(xy, 16);
+      }
+      put(&h.constraint_edges, 1);
+    }
+    const std::uint64_t sum = checksum(b);
+    put(&sum, 8);
+    return b;
+  }
+
+  // Takes the state `b` written by state() in a run with the same digest,
+  // the scratch files of that moment (`exact`: of exactly that size, a
+  // part kept once meshed; else cut back to it, a checkpoint). False, and
+  // nothing changed, when `b` is damaged or another run's, or the scratch
+  // files are not there.
+  bool load(const std::string& b, bool exact)
+  {
+    const std::size_t magic = std::strlen(part_file_magic);
+    if(b.size() < magic + 80 || b.compare(0, magic, part_file_magic) != 0) return false;
+    std::uint64_t sum = 0;
+    std::memcpy(&sum, b.data() + b.size() - 8, 8);
+    if(sum != checksum(b.substr(0, b.size() - 8))) return false;
+    std::size_t at = magic;
+    auto get = [&](void* data, std::size_t n) {
+      if(at + n > b.size() - 8) return false;
+      std::memcpy(data, b.data() + at, n);
+      at += n;
+      return true;
+    };
+    std::uint64_t head[9];
+    get(head, sizeof head);
+    // the counts bounded by the bytes there are (a damaged file whose
+    // checksum happens to match must not make huge vectors)
+    if(head[0] != run_ || head[1] / 64 > b.size() || head[7] > b.size() / 16 || head[8] > b.size() / 24 ||
+       head[5] > b.size() / 73)
+      return false;
+    std::vector<std::array<std::uint64_t, 2> > input_vertices(static_cast<std::size_t>(head[7]));
+    std::vector<std::array<std::uint64_t, 3> > segments(static_cast<std::size_t>(head[8]));
+    if(!get(input_vertices.data(), input_vertices.size() * 16) || !get(segments.data(), segments.size() * 24))
+      return false;
+    std::vector<std::uint64_t> words(std::size_t((head[1] + 63) / 64));
+    if(!get(words.data(), words.size() * 8)) return false;
+    std::vector<Held> held;
+    for(std::uint64_t t = 0; t < head[5]; ++t) {
+      Held h;
+      double xy[3][2];
+      if(!get(h.v.data(), 24) || !get(xy, 48) || !get(&h.constraint_edges, 1)) return false;
+      for(int k = 0; k < 3; ++k) h.p[std::size_t(k)] = Point(xy[k][0], xy[k][1]);
+      held.push_back(h);
+    }
+    if(at != b.size() - 8) return false;
+    for(std::size_t k = 0; k < input_vertices.size(); ++k)
+      if(input_vertices[k][0] >= head[1] || (k > 0 && input_vertices[k][0] <= input_vertices[k - 1][0])) return false;
+    for(const auto& seg : segments)
+      if(seg[0] >= head[1] || seg[1] >= head[1]) return false;
+    for(const Held& h : held)
+      for(std::uint64_t v : h.v)
+        if(v >= head[1]) return false;
+    // the scratch files last: nothing is cut back unless the rest is good
+    if(!points_.fits(head[3], exact) || !triangles_.fits(head[4], exact) || !regions_.fits(head[6], exact))
+      return false;
+    if(!points_.adopt(head[3], exact) || !triangles_.adopt(head[4], exact) || !regions_.adopt(head[6], exact))
+      throw std::runtime_error("the scratch files beside " + stem_ + " changed while they were taken");
+    used_.assign(head[1], std::move(words));
+    input_vertices_ = std::move(input_vertices);
+    segments_ = std::move(segments);
+    input_bits_.assign(0, {});
+    input_bits_.resize(head[1]);
+    for(const auto& v : input_vertices_) input_bits_.set(v[0]);
+    streamed_ = head[2];
+    held_ = std::move(held);
+    return true;
+  }
+
+  // the input ordinal of the mesher's vertex `v`, or none
+  std::size_t input_ordinal(std::uint64_t v) const
+  {
+    if(!input_bits_.test(v)) return Share_tags<K>::none;
+    const auto it = std::lower_bound(input_vertices_.begin(), input_vertices_.end(),
+                                     std::array<std::uint64_t, 2>{{v, 0}});
+    return std::size_t((*it)[1]);
+  }
+
   static std::uint64_t checksum(const std::string& b)
   {
     return digest_bytes(b.data(), b.size());
   }
 
   const Decomposition<K>& d_;
+  std::string stem_;
+  std::uint64_t run_;
+  int generation_ = 1; // of the last checkpoint's side file
   std::vector<std::size_t> cuts_;
   std::set<Edge_key> constraints_;
-  Scratch_file points_, triangles_;
+  Share_tags<K>& tags_;
+  Scratch_file points_, triangles_, regions_; // regions: the attribute of each streamed triangle
   std::vector<Held> held_;
+  // the input vertices among the mesher's (bits, and the mesher's numbers
+  // with the input's ordinals, in order), and the segments found in the
+  // streamed triangles (the mesher's numbers, the marker)
+  Counted_bits input_bits_;
+  std::vector<std::array<std::uint64_t, 2> > input_vertices_;
+  std::vector<std::array<std::uint64_t, 3> > segments_;
   Counted_bits used_;
   std::uint64_t streamed_ = 0;
 };
@@ -403,6 +650,10 @@ struct Streamed_share
   // the held triangles the rank keeps and the merged band's, by vertex
   // number: the mesher's (below `vertices`), then the band's new points
   std::vector<std::array<std::uint64_t, 3> > triangles;
+  // their tags: region attributes, and the segments among their edges
+  // (by vertex number, with the marker)
+  std::vector<double> regions;
+  std::vector<std::array<std::uint64_t, 3> > segments;
   std::vector<std::array<double, 2> > new_points;
   AFM::internal::Flat_hash_map<std::uint64_t, std::array<double, 2> > moved{~std::uint64_t(0)};
   // the vertices the share uses, those it owns, and the numbers of the
@@ -419,16 +670,33 @@ template <class K>
 Streamed_share streamed_share(Part_stream<K>& s, const Interface_work<K, Band<K, std::size_t> >& w, int rank)
 {
   typedef typename CDT<K>::Vertex_handle Vertex_handle;
+  typedef typename K::Point_2 Point;
   Streamed_share m;
   m.vertices = s.vertices();
   m.streamed_triangles = s.streamed_triangles();
+  // the tags of the triangles in memory, from their points
+  Share_tags<K>& tags = s.tags();
+  auto tag = [&](const std::array<std::uint64_t, 3>& v, const std::array<Point, 3>& p) {
+    if(tags.has_regions()) m.regions.push_back(tags.region_attribute(p[0], p[1], p[2]));
+    std::array<std::size_t, 3> ordinal;
+    for(std::size_t k = 0; k < 3; ++k)
+      ordinal[k] = tags.input_vertex(CGAL::to_double(p[k].x()), CGAL::to_double(p[k].y()));
+    for(std::size_t k = 0; k < 3; ++k) {
+      int marker = 0;
+      if(tags.segment(ordinal[k], ordinal[(k + 1) % 3], marker))
+        m.segments.push_back({{v[k], v[(k + 1) % 3], std::uint64_t(std::int64_t(marker))}});
+    }
+  };
   std::vector<char> left(s.held().size(), 0);
   if(w.has_lower)
     for(std::size_t t : w.sent.faces) left[t] = 1;
   if(w.has_upper)
     for(std::size_t t : w.kept_band.faces) left[t] = 1;
   for(std::size_t t = 0; t < s.held().size(); ++t)
-    if(!left[t]) m.triangles.push_back(s.held()[t].v);
+    if(!left[t]) {
+      m.triangles.push_back(s.held()[t].v);
+      tag(s.held()[t].v, s.held()[t].p);
+    }
   // the merged band: the points of this rank's band keep their numbers (and
   // take the place the seam smoothing gave them), rank r + 1's are new
   AFM::internal::Flat_hash_map<const void*, std::uint64_t> number(nullptr);
@@ -446,9 +714,12 @@ Streamed_share streamed_share(Part_stream<K>& s, const Interface_work<K, Band<K,
       return number.insert(&*v, m.vertices + m.new_points.size() - 1);
     };
     for(auto f = w.merged.finite_faces_begin(); f != w.merged.finite_faces_end(); ++f)
-      if(f->is_in_domain())
+      if(f->is_in_domain()) {
         m.triangles.push_back({{number_of(f->vertex(0)), number_of(f->vertex(1)), number_of(f->vertex(2))}});
+        tag(m.triangles.back(), {{f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()}});
+      }
   }
+  check_segments_found<K>(tags, s.segments().size() + m.segments.size());
   m.used = std::move(s.used());
   m.used.resize(m.vertices + m.new_points.size());
   for(const auto& t : m.triangles)
@@ -482,6 +753,60 @@ Streamed_share streamed_share(Part_stream<K>& s, const Interface_work<K, Band<K,
   if(m.id_from_below.size() != m.used.total() - m.owned.total())
     throw std::logic_error("a vertex of the rank's share has no number");
   return m;
+}
+
+// The tags of a streamed piece: the segments and region attributes the
+// sink found in the streamed triangles (the attributes in a scratch file),
+// then the share's; the markers of the points from their coordinates.
+template <class K>
+Vtu_tags streamed_tags(std::ostream& os, bool binary, const Part_stream<K>& s, const Streamed_share& m)
+{
+  Vtu_tags v;
+  v.segments_per_rank = {s.segments().size() + m.segments.size()};
+  v.regions = s.tags().has_regions();
+  const std::size_t chunk = std::size_t(1) << 20;
+  auto flush = [&os](std::string& raw) {
+    os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
+    raw.clear();
+  };
+  auto each_segment = [&s, &m](const std::function<void(const std::array<std::uint64_t, 3>&)>& f) {
+    for(const auto& seg : s.segments()) f(seg);
+    for(const auto& seg : m.segments) f(seg);
+  };
+  v.segments = [&os, &m, binary, each_segment](std::string& raw, bool wide) {
+    each_segment([&](const std::array<std::uint64_t, 3>& seg) {
+      put_index(os, raw, binary, wide, m.used.rank(seg[0]), ' ');
+      put_index(os, raw, binary, wide, m.used.rank(seg[1]), '\n');
+    });
+  };
+  v.segment_markers = [&os, binary, each_segment](std::string& raw) {
+    each_segment([&](const std::array<std::uint64_t, 3>& seg) {
+      put_value(os, raw, binary, std::int32_t(std::int64_t(seg[2])));
+    });
+  };
+  v.point_markers = [&os, &s, &m, binary, chunk, flush](std::string& raw) {
+    std::uint64_t i = 0;
+    s.points_file().template read<double>(2 * chunk, [&](const double* xy, std::size_t n) {
+      for(std::size_t k = 0; k + 1 < n; k += 2, ++i)
+        if(m.used.test(i)) put_value(os, raw, binary, std::int32_t(s.tags().marker_at(xy[k], xy[k + 1])));
+      flush(raw);
+    });
+    if(i != m.vertices) throw std::runtime_error("the scratch file " + s.points_file().name() + " is short");
+    for(const auto& p : m.new_points)
+      if(m.used.test(i++)) put_value(os, raw, binary, std::int32_t(s.tags().marker_at(p[0], p[1])));
+  };
+  v.triangle_regions = [&os, &s, &m, binary, chunk, flush](std::string& raw) {
+    std::uint64_t read = 0;
+    s.regions_file().template read<double>(chunk, [&](const double* a, std::size_t n) {
+      for(std::size_t k = 0; k < n; ++k) put_value(os, raw, binary, a[k]);
+      read += n;
+      flush(raw);
+    });
+    if(read != m.streamed_triangles)
+      throw std::runtime_error("the scratch file " + s.regions_file().name() + " is short");
+    for(double a : m.regions) put_value(os, raw, binary, a);
+  };
+  return v;
 }
 
 // This rank's piece of OUT.pvtu from its scratch files and its share.
@@ -548,11 +873,12 @@ void write_streamed_piece(const std::string& pvtu, const Part_stream<K>& s, cons
           if(raw.size() > chunk) flush(raw);
         }
         flush(raw);
-      });
+      },
+      streamed_tags(os, binary, s, m));
     os.close();
     if(os.fail()) throw std::runtime_error("cannot write " + name);
   }
-  if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks);
+  if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks, s.tags().has_regions());
 }
 
 } // namespace afmesh_2_mpi
