@@ -15,11 +15,6 @@
 
 namespace afmesh_2_mpi {
 
-inline bool ends_with_off(const std::string& out)
-{
-  return out.size() >= 4 && out.compare(out.size() - 4, 4, ".off") == 0;
-}
-
 inline std::vector<double> owned_points(const Rank_mesh& m)
 {
   std::vector<double> xy;
@@ -68,10 +63,7 @@ inline Vtu_tags merged_tags(std::ostream& os, bool binary, const Rank_mesh& m, i
   Vtu_tags v;
   v.segments_per_rank = segments_per_rank;
   v.regions = m.tags.regions;
-  auto flush = [&os](std::string& raw) {
-    os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
-    raw.clear();
-  };
+  auto flush = [&os](std::string& raw) { write_out(os, raw); };
   v.segments = [&os, &m, binary, ranks, flush](std::string& raw, bool wide) {
     for(int r = 0; r < ranks; ++r) {
       const std::vector<std::uint64_t> s =
@@ -114,7 +106,7 @@ inline void write_merged(const std::string& out, const Rank_mesh& m, int rank, i
   const std::vector<std::uint64_t> triangles_per_rank = gather_to_root<std::uint64_t>(m.triangles.size(), ranks);
   const std::vector<std::uint64_t> segments_per_rank = gather_to_root<std::uint64_t>(m.tags.segments.size(), ranks);
   const std::uint64_t nv = sum_over_ranks(m.owned_count);
-  const bool vtu = !ends_with_off(out);
+  const bool vtu = !afmesh_2::ends_with(out, ".off");
   if(rank != 0) {
     send_vector(owned_points(m), 0, MERGED_POINTS);
     send_vector(numbered_triangles(m), 0, MERGED_TRIANGLES);

@@ -187,6 +187,13 @@ inline void put_index(std::ostream& os, std::string& raw, bool binary, bool wide
   else vtu::vtu_append_raw(raw, std::int32_t(v));
 }
 
+// Writes what `raw` holds to `os` and empties it.
+inline void write_out(std::ostream& os, std::string& raw)
+{
+  os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
+  raw.clear();
+}
+
 // Appends a value to a binary array, or prints it on a line.
 template <class T>
 void put_value(std::ostream& os, std::string& raw, bool binary, T v)

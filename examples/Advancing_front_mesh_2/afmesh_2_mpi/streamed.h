@@ -765,10 +765,7 @@ Vtu_tags streamed_tags(std::ostream& os, bool binary, const Part_stream<K>& s, c
   v.segments_per_rank = {s.segments().size() + m.segments.size()};
   v.regions = s.tags().has_regions();
   const std::size_t chunk = std::size_t(1) << 20;
-  auto flush = [&os](std::string& raw) {
-    os.write(raw.data(), static_cast<std::streamsize>(raw.size()));
-    raw.clear();
-  };
+  auto flush = [&os](std::string& raw) { write_out(os, raw); };
   auto each_segment = [&s, &m](const std::function<void(const std::array<std::uint64_t, 3>&)>& f) {
     for(const auto& seg : s.segments()) f(seg);
     for(const auto& seg : m.segments) f(seg);
