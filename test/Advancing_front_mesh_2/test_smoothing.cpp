@@ -85,6 +85,35 @@ AFM_TEST_CASE(test_smoothing_square_with_hole)
   }
 }
 
+// The percentiles are the sorted ratios' values at p (n - 1), and the
+// histograms count every triangle (the 1% and 5% were once read after a
+// later selection had moved them).
+AFM_TEST_CASE(test_mesh_quality_percentiles)
+{
+  const auto in = afm_geometry::square_with_circular_hole(1.0, 0.25, 0.01);
+  CDT cdt;
+  mesh_into(cdt, in, 0.01);
+  const auto q = CGAL::Advancing_front_mesh_2::mesh_quality(cdt);
+  std::vector<double> ratios;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain()) {
+      const auto &a = f->vertex(0)->point(), &b = f->vertex(1)->point(), &c = f->vertex(2)->point();
+      ratios.push_back(CGAL::Advancing_front_mesh_2::internal::radius_ratio(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()));
+    }
+  std::sort(ratios.begin(), ratios.end());
+  AFM_CHECK(ratios.size() == q.number_of_triangles && ratios.size() > 10000);
+  const auto at = [&](double p) { return ratios[std::size_t(p * double(ratios.size() - 1))]; };
+  AFM_CHECK_MSG(q.radius_ratio_p1 == at(0.01), q.radius_ratio_p1 << " for " << at(0.01));
+  AFM_CHECK_MSG(q.radius_ratio_p5 == at(0.05), q.radius_ratio_p5 << " for " << at(0.05));
+  AFM_CHECK_MSG(q.radius_ratio_median == at(0.5), q.radius_ratio_median << " for " << at(0.5));
+  AFM_CHECK(q.radius_ratio_p1 < q.radius_ratio_p5 && q.radius_ratio_p5 < q.radius_ratio_median);
+  AFM_CHECK(q.min_radius_ratio == ratios.front());
+  std::size_t counted = 0, angles = 0;
+  for(std::size_t n : q.radius_ratio_histogram) counted += n;
+  for(std::size_t n : q.angle_histogram) angles += n;
+  AFM_CHECK(counted == ratios.size() && angles == 3 * ratios.size());
+}
+
 // Boundary and isolated points never move; a held vertex does not either.
 AFM_TEST_CASE(test_smoothing_keeps_boundary_and_held_vertices)
 {
