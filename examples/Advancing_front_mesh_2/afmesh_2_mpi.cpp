@@ -1,7 +1,8 @@
 // afmesh_2_mpi: afmesh_2 on MPI ranks, for meshes larger than one machine.
 //
 //   mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]
-//          -o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output  [--stats]
+//          -o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output
+//          [--stats] [--report] [--histogram OUT.svg]
 //
 // Every rank reads INPUT and makes the size field, the boundary
 // discretisation and the cuts of the decomposition itself (afmesh_2_mpi/
@@ -28,19 +29,26 @@
 // kept parts, continues the others from their checkpoints and writes the
 // uninterrupted run's pieces.
 //
+// --stats, --report and --histogram give afmesh_2's quality figures of the
+// whole mesh, added up over the ranks (afmesh_2_mpi/quality.h), and each
+// rank's figures (afmesh_2_mpi/report.h); with --stream, as afmesh_2
+// --stream, no quality figures.
+//
 // The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
 // MPI: --merge with --stream, --smooth, --min-angle, --keep-segments,
-// --time-limit, --max-steps, --threads, --kernel other than epick,
-// --histogram, --report, and the formats other than .pvtu, .off and .vtu:
-// they are refused (exit 2).
+// --time-limit, --max-steps, --threads, --kernel other than epick, and the
+// formats other than .pvtu, .off and .vtu: they are refused (exit 2).
 //
 // Exit codes as afmesh_2's: 0 success; 1 invalid input; 2 bad usage; 3 an
 // output that could not be written, or an internal error.
 #include "afmesh_2_mpi/channel.h"
 #include "afmesh_2_mpi/merged.h"
+#include "afmesh_2_mpi/quality.h"
+#include "afmesh_2_mpi/report.h"
 #include "afmesh_2_mpi/streamed.h"
 #include "afmesh_2_mpi/tags.h"
 
+#include <CGAL/Advancing_front_mesh_2/IO/write_quality_histogram.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <nlohmann/json.hpp>
@@ -159,12 +167,13 @@ inline Mpi_options parse(const std::vector<std::string>& args)
                         : o.max_steps > 0          ? "--max-steps"
                         : threads                  ? "--threads (one thread per rank: start more ranks)"
                         : o.kernel != "epick"      ? "--kernel other than epick"
-                        : !o.histogram.empty()     ? "--histogram"
-                        : o.report                 ? "--report"
                                                    : nullptr;
   if(refused != nullptr) throw afmesh_2::Usage_error(std::string("afmesh_2_mpi does not support ") + refused + " yet");
   if(m.outputs.empty() && !no_output)
     throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
+  if(o.stream && !o.histogram.empty())
+    throw afmesh_2::Usage_error("--stream cannot be combined with --histogram (no quality figures, as afmesh_2 "
+                                "--stream)");
   if(o.stream && (m.merge || m.outputs.empty()))
     throw afmesh_2::Usage_error("--stream writes pieces: give -o OUT.pvtu (without --merge)");
   if((m.stop_after_meshing || m.resume || m.checkpoint_every > 0) && !o.stream)
@@ -204,9 +213,14 @@ inline std::vector<std::string> files_of(const Mpi_options& m, const std::string
 // Returns false then.
 inline bool outputs_writable(const Mpi_options& m, int rank, int ranks)
 {
-  for(const std::string& out : m.outputs) {
+  std::vector<std::vector<std::string> > groups;
+  for(const std::string& out : m.outputs) groups.push_back(files_of(m, out, rank));
+  // the histogram: rank 0 writes it
+  if(!m.opt.histogram.empty())
+    groups.push_back(rank == 0 ? std::vector<std::string>{m.opt.histogram} : std::vector<std::string>());
+  for(const std::vector<std::string>& files : groups) {
     std::string failed;
-    for(const std::string& mine : files_of(m, out, rank)) {
+    for(const std::string& mine : files) {
       const std::string probe = mine + ".afmesh_2_mpi-probe";
       const bool ok = bool(std::ofstream(probe.c_str(), std::ios::out | std::ios::binary | std::ios::app));
       std::remove(probe.c_str());
@@ -247,27 +261,6 @@ std::uint64_t digest(const Decomposition<K>& d)
       mix(&p.second, sizeof p.second);
     }
   return h;
-}
-
-// What a rank's share and its interfaces came to.
-struct Share_figures
-{
-  std::uint64_t triangles = 0, owned_vertices = 0, band_triangles = 0, flips = 0, seam_vertices = 0, widenings = 0,
-                band_bytes_sent = 0, held_triangles = 0;
-};
-
-template <class Work>
-Share_figures share_figures(const Work& w, std::uint64_t triangles, std::uint64_t owned_vertices)
-{
-  Share_figures f;
-  f.triangles = triangles;
-  f.owned_vertices = owned_vertices;
-  f.band_triangles = w.merge.band_triangles;
-  f.flips = w.merge.flips;
-  f.seam_vertices = w.merge.seam_vertices;
-  f.widenings = w.widenings;
-  f.band_bytes_sent = w.bytes_sent;
-  return f;
 }
 
 // The digest of the options that make the parts and of the input files'
@@ -452,9 +445,13 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     throw afmesh_2::Input_error(m.opt.input +
                                 ": nothing to mesh: no bounded region is left once the holes are removed");
 
-  // the interfaces merged, the rank's share numbered and written
+  // the interfaces merged, the rank's share numbered, its quality added to
+  // the others' (not streamed: as afmesh_2 --stream, no quality figures)
+  // and written
   Share_figures share;
-  double t_interfaces = 0, t_writing = 0;
+  double t_interfaces = 0, t_writing = 0, t_quality = 0;
+  const bool want_quality = !stream && (m.opt.stats || m.opt.report || !m.opt.histogram.empty());
+  AFM::Mesh_quality quality;
   if(stream) {
     const auto t_merge = std::chrono::steady_clock::now();
     Interface_work<K, Band<K, std::size_t> > w;
@@ -477,6 +474,11 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     mesh.tags = tag_share<K>(*tags, mesh.points, mesh.triangles);
     check_segments_found<K>(*tags, mesh.tags.segments.size());
     t_interfaces = seconds_since(t_merge);
+    if(want_quality) {
+      const auto t_q = std::chrono::steady_clock::now();
+      quality = mesh_quality_over_ranks<typename K::Point_2>(mesh, in.sizing, rank, ranks);
+      t_quality = seconds_since(t_q);
+    }
     const auto t_write = std::chrono::steady_clock::now();
     for(const std::string& out : m.outputs) {
       if(m.merge) write_merged(out, mesh, rank, ranks, !m.opt.vtu_ascii);
@@ -489,53 +491,22 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   // the figures of every rank, printed by rank 0
   rusage usage;
   getrusage(RUSAGE_SELF, &usage);
-  struct Figures
-  {
-    double meshing, interfaces, writing, peak_memory_mb;
-    Share_figures share;
-    int code;
-    bool resumed, from_checkpoint;
-    std::uint64_t checkpoints;
-  } mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc), resumed, ck.resume,
-         std::uint64_t(st.checkpoints_written)};
-  const std::vector<Figures> all = gather_to_root(mine, ranks);
-  if(rank == 0 && m.opt.stats) {
-    nlohmann::ordered_json j;
-    j["input"] = m.opt.input;
-    j["ranks"] = ranks;
-    j["parts"] = d.parts;
-    if(!d.one_part_reason.empty()) j["one_part_reason"] = d.one_part_reason;
-    if(!fewer_parts_reason.empty()) j["fewer_parts_reason"] = fewer_parts_reason;
-    j["axis"] = d.plan.axis;
-    std::vector<double> cuts;
-    for(const auto& c : d.plan.cuts) cuts.push_back(c.position);
-    j["cuts"] = cuts;
-    j["predicted_triangles"] = d.plan.estimated;
-    std::uint64_t triangles = 0, vertices = 0;
-    nlohmann::ordered_json per_rank = nlohmann::ordered_json::array();
-    for(const Figures& f : all) {
-      const Share_figures& s = f.share;
-      triangles += s.triangles;
-      vertices += s.owned_vertices;
-      per_rank.push_back({{"triangles", s.triangles}, {"owned_vertices", s.owned_vertices},
-                          {"meshing_time", f.meshing}, {"interface_time", f.interfaces},
-                          {"writing_time", f.writing}, {"band_triangles", s.band_triangles},
-                          {"interface_flips", s.flips}, {"seam_vertices", s.seam_vertices},
-                          {"band_widenings", s.widenings}, {"band_bytes_sent", s.band_bytes_sent},
-                          {"peak_memory_mb", f.peak_memory_mb}, {"return_code", f.code}});
-      if(m.opt.stream) {
-        per_rank.back()["held_triangles"] = s.held_triangles;
-        per_rank.back()["resumed_part"] = f.resumed;
-        per_rank.back()["resumed_from_checkpoint"] = f.from_checkpoint;
-        per_rank.back()["checkpoints_written"] = f.checkpoints;
-      }
+  const Rank_figures mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc),
+                          resumed, ck.resume, std::uint64_t(st.checkpoints_written)};
+  const std::vector<Rank_figures> all = gather_to_root(mine, ranks);
+  if(rank != 0) return 0;
+  const Run_summary<K> summary{m.opt, d, fewer_parts_reason, all, want_quality ? &quality : nullptr,
+                               t_decomposition, t_quality, seconds_since(t_start)};
+  if(m.opt.report) afmesh_2::print_report_text(m.opt, report_text(summary, afmesh_2::boundary_summary(m.opt, in)));
+  if(m.opt.stats) std::cout << statistics_json(summary).dump() << std::endl;
+  if(!m.opt.histogram.empty()) {
+    std::ofstream os(m.opt.histogram);
+    AFM::IO::write_quality_histogram_SVG(os, quality, m.opt.input);
+    os.close();
+    if(os.fail()) {
+      std::cerr << "afmesh_2_mpi: error: cannot write " << m.opt.histogram << "\n";
+      return 3;
     }
-    j["number_of_faces"] = triangles;
-    j["number_of_vertices"] = vertices;
-    j["decomposition_time"] = t_decomposition;
-    j["total_time"] = seconds_since(t_start);
-    j["per_rank"] = per_rank;
-    std::cout << j.dump() << std::endl;
   }
   return 0;
 }
@@ -556,7 +527,7 @@ int main(int argc, char* argv[])
       std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
                    "                    (-o OUT.pvtu [--stream [--checkpoint-every K] [--resume]]\n"
                    "                     | --merge -o OUT.off|OUT.vtu | --no-output)\n"
-                   "                    [--stats]\n\n"
+                   "                    [--stats] [--report] [--histogram OUT.svg]\n\n"
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
                    "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
@@ -566,6 +537,8 @@ int main(int argc, char* argv[])
                    "--checkpoint-every K (with --stream) checkpoints each part every K triangles\n"
                    "while it is meshed (OUT_<rank>.vtu.checkpoint); --resume goes on from there.\n"
                    "--stop-after-checkpoint stops each rank after its first checkpoint.\n"
+                   "--stats, --report and --histogram give the quality of the whole mesh as afmesh_2\n"
+                   "does (not with --stream), and each rank's figures.\n"
                    "The input and size options are afmesh_2's (afmesh_2 --help).\n\n"
                    "Exit codes: 0 success, 1 invalid input, 2 bad usage, 3 an output that could not\n"
                    "be written, or an internal error.\n";

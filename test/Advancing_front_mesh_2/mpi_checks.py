@@ -10,7 +10,9 @@ points and, put together, give the --merge mesh. Each part streamed
 (--stream) gives pieces that are valid put together, and close to the mesh
 made in memory (the same on one rank); a streamed run stopped after its
 parts were meshed, or at their checkpoints, and resumed gives the same
-pieces as one run. Bad usage and invalid input stop
+pieces as one run. The quality figures of --stats, added up over the
+ranks, are those numpy computes on the merged mesh, and afmesh_2's on one
+rank; --report and --histogram are written once. Bad usage and invalid input stop
 every rank with one message and afmesh_2's exit codes.
 
 Usage: mpi_checks.py MPIEXEC AFMESH_2_MPI AFMESH_2 AFM_MAKE_INPUT AFM_CHECK_MESH WORK_DIR [LAKE.msh]
@@ -70,15 +72,48 @@ def read_off(path):
     return points, triangles
 
 
-def share_above_0_9(points, triangles):
+def radius_ratios(points, triangles):
     p = points[triangles]
     a = np.linalg.norm(p[:, 1] - p[:, 2], axis=1)
     b = np.linalg.norm(p[:, 2] - p[:, 0], axis=1)
     c = np.linalg.norm(p[:, 0] - p[:, 1], axis=1)
     s = (a + b + c) / 2
     area = np.sqrt(np.maximum(s * (s - a) * (s - b) * (s - c), 0))
-    ratio = 2 * (area / s) / (a * b * c / (4 * area))
-    return 100 * np.mean(ratio > 0.9)
+    return 2 * (area / s) / (a * b * c / (4 * area))
+
+
+def share_above_0_9(points, triangles):
+    return 100 * np.mean(radius_ratios(points, triangles) > 0.9)
+
+
+def quality(points, triangles, h):
+    """The figures of --stats' "quality" computed here, with numpy (the edge
+    figures for a uniform size h)."""
+    ratio = radius_ratios(points, triangles)
+    ordered = np.sort(ratio)
+    n = len(ratio)
+    edges = np.unique(np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]),
+                              axis=1), axis=0)
+    over = np.linalg.norm(points[edges[:, 0]] - points[edges[:, 1]], axis=1) / h
+    return {"min_radius_ratio": ordered[0], "mean_radius_ratio": ratio.mean(),
+            "share_radius_ratio_above_0_9": np.mean(ratio > 0.9),
+            "radius_ratio_p1": ordered[int(0.01 * (n - 1))], "radius_ratio_p5": ordered[int(0.05 * (n - 1))],
+            "radius_ratio_median": ordered[int(0.5 * (n - 1))],
+            "radius_ratio_histogram": np.bincount(np.minimum(19, (ratio * 20).astype(int)), minlength=20),
+            "min_edge_over_size": over.min(), "max_edge_over_size": over.max(), "mean_edge_over_size": over.mean(),
+            "share_edges_within_sqrt2": np.mean((over >= math.sqrt(0.5)) & (over <= math.sqrt(2)))}
+
+
+def same_quality(label, reported, computed):
+    """--stats' quality against quality(): the same to rounding (the ratios
+    by another formula), the histogram within two triangles."""
+    for key, value in computed.items():
+        if key == "radius_ratio_histogram":
+            moved = int(np.abs(np.array(reported[key]) - value).sum())
+            check(moved <= 2, "%s: radius ratio histogram %s, computed %s" % (label, reported[key], value.tolist()))
+        else:
+            check(abs(reported[key] - value) <= 1e-9 * max(1, abs(value)),
+                  "%s: quality %s is %r, computed %r" % (label, key, reported[key], value))
 
 
 def triangle_set(points, triangles):
@@ -135,7 +170,8 @@ run(make_input, "square-with-hole", "square.poly", "0.005")
 run(make_input, "multi-element-airfoil", "airfoil.poly")
 
 # the square on 1, 2 and 4 ranks against afmesh_2 on as many threads
-run(serial, "square.poly", "--size", "0.005", "--threads", "1", "-o", "serial.off")
+serial_stats = json.loads(run(serial, "square.poly", "--size", "0.005", "--threads", "1", "-o", "serial.off",
+                             "--stats").stdout)
 serial_points, serial_triangles = read_off("serial.off")
 for n in (1, 2, 4):
     label = "square, %d ranks" % n
@@ -146,6 +182,15 @@ for n in (1, 2, 4):
     check(sum(r["triangles"] for r in stats["per_rank"]) == len(m_triangles) and
           sum(r["owned_vertices"] for r in stats["per_rank"]) == len(m_points),
           "%s: the ranks' triangles and vertices do not add up to the merged mesh's" % label)
+    # the quality of the whole mesh, added up over the ranks: that of the
+    # merged mesh (each edge counted once across the interfaces), and on
+    # one rank, which meshes as afmesh_2 does, afmesh_2's own
+    same_quality(label, stats["quality"], quality(m_points, m_triangles, 0.005))
+    if n == 1:
+        for key, value in serial_stats["quality"].items():
+            close = value == stats["quality"][key] or (
+                isinstance(value, float) and abs(value - stats["quality"][key]) <= 1e-12 * abs(value))
+            check(close, "%s: quality %s is %r, afmesh_2's %r" % (label, key, stats["quality"][key], value))
     # --stream: each part streamed to scratch files, the triangles near the
     # cuts held back for the merge; the same mesh but for the seams (the
     # frontal mesher of a part streamed may close the front near a cut
@@ -484,6 +529,28 @@ stats = json.loads(mpi(6, "narrow.poly", "--size", "0.01", "--merge", "-o", "nar
 valid("narrow.poly", "narrow.off", "narrow strips, 6 ranks")
 check(1 < stats["parts"] < 6 and "narrower than its interface bands" in stats.get("fewer_parts_reason", ""),
       "narrow strips: %d parts, %s" % (stats["parts"], stats.get("fewer_parts_reason")))
+
+# --report and --histogram: the quality of the whole mesh, once (rank 0);
+# with --stats the JSON alone on standard output, the report on standard
+# error; streamed, no quality figures (as afmesh_2 --stream)
+r = mpi(3, "airfoil.poly", "--size", "0.02", "--no-output", "--report", "--histogram", "airfoil.svg")
+check(r.stdout.count("airfoil.poly: ") == 1 and " triangles on 3 ranks in " in r.stdout and
+      "radius ratio 2r/R: min " in r.stdout and "edge length / h: " in r.stdout and "3 parts cut at" in r.stdout,
+      "--report on 3 ranks: " + r.stdout)
+svg = open("airfoil.svg").read() if os.path.exists("airfoil.svg") else ""
+check(svg.count("<svg") == 1 and svg.rstrip().endswith("</svg>") and "airfoil.poly" in svg,
+      "--histogram: airfoil.svg is not one SVG histogram of airfoil.poly")
+r = mpi(2, "airfoil.poly", "--size", "0.02", "--no-output", "--report", "--stats")
+stats = json.loads(r.stdout)
+check("quality" in stats and "radius ratio 2r/R" in r.stderr, "--report with --stats: " + r.stderr)
+r = mpi(2, "airfoil.poly", "--size", "0.02", "--stream", "-o", "streamed/report.pvtu", "--report")
+check("triangles streamed on 2 ranks" in r.stdout and "no quality figures" in r.stdout,
+      "--report with --stream: " + r.stdout)
+r = mpi(2, "airfoil.poly", "--size", "0.02", "--stream", "-o", "streamed/report.pvtu", "--histogram", "x.svg",
+        code=2)
+check("--stream cannot be combined with --histogram" in r.stderr, "--histogram with --stream: " + r.stderr)
+r = mpi(2, "airfoil.poly", "--size", "0.02", "--no-output", "--histogram", "no_such_directory/h.svg", code=3)
+check("cannot write no_such_directory/h.svg" in r.stderr, "a histogram that cannot be written: " + r.stderr)
 
 # --help and --version: printed once, exit 0
 r = mpi(2, "--help")

@@ -53,6 +53,19 @@ inline void print_report_text(const Options& opt, const std::string& text)
   (opt.stats ? std::cerr : std::cout) << text;
 }
 
+// The report's lines on the quality `m` (`when`: what they are before,
+// or nothing), two spaces in.
+inline void print_quality_lines(std::ostream& os, const char* when, const AFM::Mesh_quality& m)
+{
+  os << "  " << when << "radius ratio 2r/R: min " << m.min_radius_ratio << ", 1% " << m.radius_ratio_p1 << ", 5% "
+     << m.radius_ratio_p5 << ", median " << m.radius_ratio_median << ", mean " << m.mean_radius_ratio << "; "
+     << 100 * m.share_above_0_9 << "% above 0.9\n"
+     << "  " << when << "angles: " << m.min_angle_degrees << " to " << m.max_angle_degrees << " degrees, "
+     << 100 * m.share_angles_below_30 << "% below 30\n"
+     << "  " << when << "edge length / h: " << m.min_edge_over_size << " to " << m.max_edge_over_size << ", mean "
+     << m.mean_edge_over_size << ", " << 100 * m.share_edges_within_sqrt2 << "% within [0.71, 1.41]\n";
+}
+
 inline void print_streamed_report(const Options& opt, const AFM::Statistics& st, double t_meshing)
 {
   std::ostringstream os;
@@ -81,15 +94,7 @@ inline void print_report(const Options& opt, const AFM::Statistics& st, const AF
        << angle.below_before << " triangles below it, " << angle.points_inserted << " points inserted, "
        << angle.triangles_changed << " triangles changed, " << angle.below_after << " left below)";
   os << "\n";
-  auto line = [&](const char* when, const AFM::Mesh_quality& m) {
-    os << "  " << when << "radius ratio 2r/R: min " << m.min_radius_ratio << ", 1% " << m.radius_ratio_p1 << ", 5% "
-       << m.radius_ratio_p5 << ", median " << m.radius_ratio_median << ", mean " << m.mean_radius_ratio << "; "
-       << 100 * m.share_above_0_9 << "% above 0.9\n"
-       << "  " << when << "angles: " << m.min_angle_degrees << " to " << m.max_angle_degrees << " degrees, "
-       << 100 * m.share_angles_below_30 << "% below 30\n"
-       << "  " << when << "edge length / h: " << m.min_edge_over_size << " to " << m.max_edge_over_size << ", mean "
-       << m.mean_edge_over_size << ", " << 100 * m.share_edges_within_sqrt2 << "% within [0.71, 1.41]\n";
-  };
+  auto line = [&](const char* when, const AFM::Mesh_quality& m) { print_quality_lines(os, when, m); };
   if(opt.smooth > 0 || opt.min_angle > 0) line(opt.smooth > 0 ? "before smoothing, " : "before refinement, ", unsmoothed);
   line("", q);
   os << "  " << boundary << "\n";

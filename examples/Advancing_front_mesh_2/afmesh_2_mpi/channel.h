@@ -54,7 +54,9 @@ enum Tag : int {
   MERGED_SEGMENTS,
   MERGED_MARKERS,
   MERGED_REGIONS,
-  MERGED_SEGMENT_MARKERS
+  MERGED_SEGMENT_MARKERS,
+  QUALITY_RATIOS,
+  QUALITY_EDGES
 };
 
 // Values are sent as bytes in chunks of at most 1 GiB.
