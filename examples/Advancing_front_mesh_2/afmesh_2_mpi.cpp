@@ -19,8 +19,9 @@
 //
 // --stream meshes each rank's part in streaming mode, for parts larger than
 // memory (afmesh_2_mpi/streamed.h): the triangles go to scratch files
-// beside the pieces as they are finished, but for those near the cuts,
-// which the interface merge needs.
+// beside the pieces (OUT_<rank>.vtu.*, also with --merge) as they are
+// finished, but for those near the cuts, which the interface merge needs;
+// the pieces, or with --merge the one file, are then written from them.
 //
 // With --stream a rank keeps its part once meshed, and --checkpoint-every K
 // checkpoints it every K triangles while it is meshed (the mesher's restart
@@ -35,9 +36,10 @@
 // --stream, no quality figures.
 //
 // The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
-// MPI: --merge with --stream, --smooth, --min-angle, --keep-segments,
-// --time-limit, --max-steps, --threads, --kernel other than epick, and the
-// formats other than .pvtu, .off and .vtu: they are refused (exit 2).
+// MPI: --min-angle, --keep-segments, --threads, --kernel other than epick,
+// and the formats other than .pvtu, .off and .vtu: they are refused (exit
+// 2). --smooth smooths each part before its interfaces are merged, its
+// cuts held; --time-limit and --max-steps limit each rank's mesher.
 //
 // Exit codes as afmesh_2's: 0 success; 1 invalid input; 2 bad usage; 3 an
 // output that could not be written, or an internal error.
@@ -160,22 +162,23 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   const char* refused = o.checkpoint_every > 0     ? "--checkpoint-every K FILE (here: --checkpoint-every K, "
                                                      "the checkpoints are beside the pieces)"
                         : !o.resume.empty()        ? "--resume=FILE (--resume takes no file here)"
-                        : o.smooth > 0             ? "--smooth"
                         : o.min_angle != 0         ? "--min-angle"
                         : o.keep_segments          ? "--keep-segments"
-                        : o.time_limit > 0         ? "--time-limit"
-                        : o.max_steps > 0          ? "--max-steps"
                         : threads                  ? "--threads (one thread per rank: start more ranks)"
                         : o.kernel != "epick"      ? "--kernel other than epick"
                                                    : nullptr;
   if(refused != nullptr) throw afmesh_2::Usage_error(std::string("afmesh_2_mpi does not support ") + refused + " yet");
   if(m.outputs.empty() && !no_output)
     throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
+  if(o.stream && o.smooth > 0)
+    throw afmesh_2::Usage_error("--stream cannot be combined with --smooth (as with afmesh_2: the triangles are "
+                                "written as they are finished)");
   if(o.stream && !o.histogram.empty())
     throw afmesh_2::Usage_error("--stream cannot be combined with --histogram (no quality figures, as afmesh_2 "
                                 "--stream)");
-  if(o.stream && (m.merge || m.outputs.empty()))
-    throw afmesh_2::Usage_error("--stream writes pieces: give -o OUT.pvtu (without --merge)");
+  if(o.stream && m.outputs.empty())
+    throw afmesh_2::Usage_error("--stream keeps its scratch files beside the output: give -o OUT.pvtu, or --merge "
+                                "-o OUT.vtu (or .off)");
   if((m.stop_after_meshing || m.resume || m.checkpoint_every > 0) && !o.stream)
     throw afmesh_2::Usage_error(std::string(m.resume                ? "--resume"
                                             : m.stop_after_meshing ? "--stop-after-meshing"
@@ -197,12 +200,23 @@ inline double seconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+// Where a streamed rank keeps its scratch, kept part and checkpoint files:
+// beside the first output, named as its piece (OUT_<rank>.vtu, also for
+// --merge -o OUT.vtu or OUT.off).
+inline std::string scratch_stem(const Mpi_options& m, int rank)
+{
+  const std::string& out = m.outputs.front();
+  return m.merge ? out.substr(0, out.find_last_of('.')) + "_" + std::to_string(rank) + ".vtu"
+                 : piece_name(out, rank);
+}
+
 // The files this rank writes for `out`: its piece (and, rank 0, the
-// collection), or (rank 0) the merged file.
+// collection), or (rank 0) the merged file; the scratch files of --stream.
 inline std::vector<std::string> files_of(const Mpi_options& m, const std::string& out, int rank)
 {
   std::vector<std::string> files;
   if(!m.merge) files.push_back(piece_name(out, rank));
+  else if(m.opt.stream && out == m.outputs.front()) files.push_back(scratch_stem(m, rank));
   if(rank == 0) files.push_back(out);
   return files;
 }
@@ -377,7 +391,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   // is kept until the run ends, so that a run that fails after it can be
   // resumed without meshing it again
   const std::uint64_t run_digest = digest(d) ^ input_files_digest(m);
-  const std::string stem = m.opt.stream ? piece_name(m.outputs.front(), rank) : std::string();
+  const std::string stem = m.opt.stream ? scratch_stem(m, rank) : std::string();
   std::unique_ptr<Part_stream<K> > stream;
   if(m.opt.stream) stream.reset(new Part_stream<K>(d, part, meshed, stem, run_digest, *tags));
   Part_checkpoints ck;
@@ -418,6 +432,15 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   } catch(const std::invalid_argument& e) {
     throw std::runtime_error(std::string("meshing the part: ") + e.what());
   }
+  // --smooth: each part smoothed in memory before its interfaces are
+  // merged, its cuts held (the one part: as afmesh_2 smooths)
+  AFM::Smoothing_statistics smoothing;
+  double t_smoothing = 0;
+  if(!stream && has_part && m.opt.smooth > 0) {
+    const auto t_smooth = std::chrono::steady_clock::now();
+    smoothing = d.parts == 1 ? afmesh_2::smooth(m.opt, in) : smooth_part<K>(m.opt, part_cdt, d.free_points[part]);
+    t_smoothing = seconds_since(t_smooth);
+  }
   const bool stopped = rc == AFM::STOPPED_AT_CHECKPOINT;
   if(stream && has_part && !resumed && !stopped) {
     stream->close();
@@ -426,6 +449,13 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   const double t_meshing = seconds_since(t_mesh);
   const std::uint64_t parts_resumed = sum_over_ranks(resumed ? 1 : 0);
   const std::uint64_t parts_stopped = sum_over_ranks(stopped ? 1 : 0);
+  const std::uint64_t timed_out = sum_over_ranks(rc == AFM::TIME_LIMIT_REACHED ? 1 : 0);
+  const std::uint64_t out_of_steps = sum_over_ranks(rc == AFM::ITERATION_LIMIT_REACHED ? 1 : 0);
+  if(rank == 0 && timed_out + out_of_steps > 0)
+    std::cerr << "afmesh_2_mpi: note: " << m.opt.input << ": "
+              << (timed_out > 0 ? "--time-limit" : "--max-steps") << " reached on " << timed_out + out_of_steps
+              << " of " << d.parts
+              << " parts: the rest of their fronts was closed on existing points (valid, coarser there)\n";
   if(parts_stopped > 0) {
     if(rank == 0)
       std::cerr << "afmesh_2_mpi: note: " << parts_stopped << " of " << d.parts
@@ -460,7 +490,10 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     const Streamed_share mesh = streamed_share<K>(*stream, w, rank);
     t_interfaces = seconds_since(t_merge);
     const auto t_write = std::chrono::steady_clock::now();
-    for(const std::string& out : m.outputs) write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
+    for(const std::string& out : m.outputs) {
+      if(m.merge) write_merged(out, merged_share<K>(*stream, mesh), rank, ranks, !m.opt.vtu_ascii);
+      else write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
+    }
     t_writing = seconds_since(t_write);
     // every piece is written: the kept parts go
     if(all_ranks(true) && has_part) stream->discard();
@@ -481,7 +514,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     }
     const auto t_write = std::chrono::steady_clock::now();
     for(const std::string& out : m.outputs) {
-      if(m.merge) write_merged(out, mesh, rank, ranks, !m.opt.vtu_ascii);
+      if(m.merge) write_merged(out, merged_share(mesh), rank, ranks, !m.opt.vtu_ascii);
       else write_piece(out, mesh, rank, ranks, !m.opt.vtu_ascii);
     }
     t_writing = seconds_since(t_write);
@@ -492,7 +525,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   rusage usage;
   getrusage(RUSAGE_SELF, &usage);
   const Rank_figures mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc),
-                          resumed, ck.resume, std::uint64_t(st.checkpoints_written)};
+                          resumed, ck.resume, std::uint64_t(st.checkpoints_written), t_smoothing,
+                          std::uint64_t(smoothing.moves), std::uint64_t(smoothing.flips)};
   const std::vector<Rank_figures> all = gather_to_root(mine, ranks);
   if(rank != 0) return 0;
   const Run_summary<K> summary{m.opt, d, fewer_parts_reason, all, want_quality ? &quality : nullptr,
@@ -525,13 +559,13 @@ int main(int argc, char* argv[])
     m = parse(std::vector<std::string>(argv + 1, argv + argc));
     if(m.help && mpi.rank == 0)
       std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
-                   "                    (-o OUT.pvtu [--stream [--checkpoint-every K] [--resume]]\n"
-                   "                     | --merge -o OUT.off|OUT.vtu | --no-output)\n"
+                   "                    (-o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output)\n"
+                   "                    [--stream [--checkpoint-every K] [--resume]]\n"
                    "                    [--stats] [--report] [--histogram OUT.svg]\n\n"
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
                    "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
-                   "scratch files beside the pieces). A streamed rank keeps its part, once meshed,\n"
+                   "scratch files beside the output, OUT_<rank>.vtu.*). A streamed rank keeps its part, once meshed,\n"
                    "until the pieces are written: --stop-after-meshing stops there, and the same\n"
                    "command with --resume (after a stop or a failure) meshes only the parts not kept.\n"
                    "--checkpoint-every K (with --stream) checkpoints each part every K triangles\n"

@@ -214,6 +214,11 @@ for n in (1, 2, 4):
         if n == 1:
             check(triangle_set(s_points, s_triangles) == triangle_set(m_points, m_triangles),
                   "%s, streamed: not the mesh made in memory" % label)
+        # --merge with --stream: the same mesh in one file (.off)
+        mpi(n, "square.poly", "--size", "0.005", "--stream", "--merge", "-o", "streamed/merged.off")
+        o_points, o_triangles = read_off("streamed/merged.off")
+        check(np.array_equal(o_points, s_points) and np.array_equal(o_triangles, s_triangles),
+              "%s, streamed: --merge is not the pieces put together" % label)
         check(abs(len(s_triangles) - len(m_triangles)) <= 0.001 * len(m_triangles),
               "%s, streamed: %d triangles, in memory %d" % (label, len(s_triangles), len(m_triangles)))
         mine, theirs = share_above_0_9(s_points, s_triangles), share_above_0_9(m_points, m_triangles)
@@ -290,6 +295,19 @@ left = [f for f in os.listdir("kept") if f.endswith(".part") or f.endswith(".tmp
 check(not left, "files left after a complete run: %s" % left)
 r = mpi(2, "square.poly", "--size", "0.005", "--resume", "-o", "kept/m.pvtu", code=2)
 check("add --stream" in r.stderr, "--resume without --stream: " + r.stderr)
+# the same with --merge: the kept parts beside the merged file, named as
+# the pieces would be, and the uninterrupted run's file
+mpi(2, "square.poly", "--size", "0.005", "--stream", "--merge", "-o", "kept/full_merged.vtu")
+mpi(2, "square.poly", "--size", "0.005", "--stream", "--merge", "--stop-after-meshing", "-o", "kept/sm.vtu")
+kept = sorted(os.listdir("kept"))
+check("sm_0.vtu.part" in kept and "sm_1.vtu.part" in kept and "sm.vtu" not in kept,
+      "--stop-after-meshing with --merge: %s" % kept)
+os.remove("kept/sm_0.vtu.part")
+mpi(2, "square.poly", "--size", "0.005", "--stream", "--merge", "--resume", "-o", "kept/sm.vtu")
+check(open("kept/sm.vtu", "rb").read() == open("kept/full_merged.vtu", "rb").read(),
+      "--resume with --merge: not the uninterrupted run's file")
+check(not [f for f in os.listdir("kept") if f.startswith("sm_") or f.startswith("full_merged_")],
+      "files left after a complete run with --merge: %s" % sorted(os.listdir("kept")))
 
 # checkpoints within a part (afmesh_2's restart facility, the mesher's own):
 # each rank stops after its first checkpoint, then after its next one (the
@@ -390,6 +408,8 @@ mpi(3, *tagged, "-o", "kept/t.pvtu")
 mpi(3, *tagged, "--merge", "-o", "tagged_merged.vtu")
 mpi(3, *tagged, "--merge", "--vtu-ascii", "-o", "tagged_ascii.vtu")
 mpi(3, *tagged, "--stream", "-o", "kept/ts.pvtu")
+mpi(3, *tagged, "--stream", "--merge", "-o", "kept/tsm.vtu")
+mpi(3, *tagged, "--stream", "--merge", "--vtu-ascii", "-o", "kept/tsm_ascii.vtu")
 
 
 def tags_of(files):
@@ -420,7 +440,8 @@ check(len(reference[0]) > 0 and len(reference[1]) > 0 and len(reference[2]) == 3
       "afmesh_2's tagged mesh: %d marked vertices, %d segments, regions %s" %
       (len(reference[0]), len(reference[1]), sorted(reference[2])))
 for label, files in (("pieces", ["kept/t_%d.vtu" % r for r in range(3)]), ("merged", ["tagged_merged.vtu"]),
-                     ("merged ASCII", ["tagged_ascii.vtu"]), ("streamed", ["kept/ts_%d.vtu" % r for r in range(3)])):
+                     ("merged ASCII", ["tagged_ascii.vtu"]), ("streamed", ["kept/ts_%d.vtu" % r for r in range(3)]),
+                     ("streamed and merged", ["kept/tsm.vtu"]), ("streamed and merged, ASCII", ["kept/tsm_ascii.vtu"])):
     marked, segments, area = tags_of(files)
     check(marked == reference[0], "%s: %d marked vertices, afmesh_2 --threads 3 %d" %
           (label, len(marked), len(reference[0])))
@@ -436,6 +457,15 @@ streamed_pieces = read_pieces("kept/ts.pvtu", 3)
 if streamed_pieces is not None:
     write_off("tagged_streamed.off", *streamed_pieces)
     valid("tagged.poly", "tagged_streamed.off", "tagged, 3 streamed ranks")
+    # --merge with --stream: the streamed pieces in one file, numbered as
+    # they are, in binary and ASCII
+    for name in ("kept/tsm.vtu", "kept/tsm_ascii.vtu"):
+        m = meshio.read(name)
+        same = np.array_equal(m.points[:, :2], streamed_pieces[0]) and np.array_equal(
+            m.cells_dict["triangle"], streamed_pieces[1])
+        check(same, "tagged: %s is not the streamed pieces put together" % name)
+check(not [f for f in os.listdir("kept") if f.startswith("tsm_") and ".vtu." in f],
+      "--merge with --stream left scratch files: %s" % sorted(os.listdir("kept")))
 collection = open("kept/t.pvtu").read()
 check(all('Name="%s"' % name in collection for name in ("GlobalNodeId", "marker", "partition", "region")),
       "the collection does not declare the pieces' arrays: " + collection)
@@ -552,6 +582,41 @@ check("--stream cannot be combined with --histogram" in r.stderr, "--histogram w
 r = mpi(2, "airfoil.poly", "--size", "0.02", "--no-output", "--histogram", "no_such_directory/h.svg", code=3)
 check("cannot write no_such_directory/h.svg" in r.stderr, "a histogram that cannot be written: " + r.stderr)
 
+# --smooth: each part smoothed before its interfaces are merged, its cuts
+# held; against afmesh_2 --threads 2 --smooth 3, which smooths the merged
+# mesh: the same counts, the share above 0.9 within half a point
+threads = json.loads(run(serial, "square.poly", "--size", "0.005", "--threads", "2", "--smooth", "3", "-o",
+                         "threads_smoothed.off", "--stats").stdout)
+stats = json.loads(mpi(2, "square.poly", "--size", "0.005", "--smooth", "3", "--merge", "-o", "smoothed.off",
+                       "--stats").stdout)
+valid("square.poly", "smoothed.off", "square, 2 ranks, --smooth 3")
+check(stats["triangles"] == threads["triangles"] and stats["smoothing"]["moves"] > 0 and
+      all(r["smoothing_moves"] > 0 for r in stats["per_rank"]),
+      "--smooth 3 on 2 ranks: %d triangles (on threads %d), smoothing %s" %
+      (stats["triangles"], threads["triangles"], stats["smoothing"]))
+mine, theirs = (100 * q["quality"]["share_radius_ratio_above_0_9"] for q in (stats, threads))
+unsmoothed = json.loads(mpi(2, "square.poly", "--size", "0.005", "--no-output", "--stats").stdout)
+check(abs(mine - theirs) <= 0.5 and mine > 100 * unsmoothed["quality"]["share_radius_ratio_above_0_9"],
+      "--smooth 3 on 2 ranks: share above 0.9 %.2f%%, on threads %.2f%%" % (mine, theirs))
+r = mpi(2, "square.poly", "--size", "0.005", "--smooth", "3", "--stream", "-o", "streamed/x.pvtu", code=2)
+check("--stream cannot be combined with --smooth" in r.stderr, "--smooth with --stream: " + r.stderr)
+
+# --max-steps (and --time-limit, which works the same way): each rank's
+# mesher stops there and closes the rest of its front on existing points;
+# the mesh is valid, in memory and streamed
+r = mpi(2, "square.poly", "--size", "0.005", "--max-steps", "3000", "--merge", "-o", "limited.off", "--stats")
+stats = json.loads(r.stdout)
+valid("square.poly", "limited.off", "square, 2 ranks, --max-steps 3000")
+check("--max-steps reached on 2 of 2 parts" in r.stderr and all(q["return_code"] != 0 for q in stats["per_rank"]) and
+      stats["triangles"] < 0.5 * len(serial_triangles),
+      "--max-steps 3000: %d triangles, codes %s, %s" %
+      (stats["triangles"], [q["return_code"] for q in stats["per_rank"]], r.stderr))
+mpi(2, "square.poly", "--size", "0.005", "--max-steps", "3000", "--stream", "-o", "streamed/limited.pvtu")
+pieces = read_pieces("streamed/limited.pvtu", 2)
+if pieces is not None:
+    write_off("limited_streamed.off", *pieces)
+    valid("square.poly", "limited_streamed.off", "square, 2 streamed ranks, --max-steps 3000")
+
 # --help and --version: printed once, exit 0
 r = mpi(2, "--help")
 check(r.stdout.count("Usage: mpirun") == 1, "--help: " + r.stdout)
@@ -559,12 +624,10 @@ r = mpi(2, "--version")
 check(len(r.stdout.strip().splitlines()) == 1, "--version: " + r.stdout)
 
 # bad usage and invalid input: afmesh_2's codes, one message (rank 0's)
-r = mpi(2, "square.poly", "--size", "0.01", "--smooth", "3", "-o", "x.pvtu", code=2)
-check("does not support --smooth" in r.stderr, "--smooth: " + r.stderr)
-r = mpi(2, "square.poly", "--size", "0.01", "--stream", "--merge", "-o", "x.off", code=2)
-check("--stream writes pieces" in r.stderr, "--stream with --merge: " + r.stderr)
+r = mpi(2, "square.poly", "--size", "0.01", "--min-angle", "30", "-o", "x.pvtu", code=2)
+check("does not support --min-angle" in r.stderr, "--min-angle: " + r.stderr)
 r = mpi(2, "square.poly", "--size", "0.01", "--stream", "--no-output", code=2)
-check("--stream writes pieces" in r.stderr, "--stream with --no-output: " + r.stderr)
+check("--stream keeps its scratch files beside the output" in r.stderr, "--stream with --no-output: " + r.stderr)
 r = mpi(2, "square.poly", "--size", "0.01", "-o", "x.off", code=2)
 check("collection of pieces" in r.stderr, "-o x.off without --merge: " + r.stderr)
 r = mpi(2, "missing.poly", "--size", "0.01", "-o", "x.pvtu", code=1)

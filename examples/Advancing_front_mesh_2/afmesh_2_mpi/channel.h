@@ -62,18 +62,54 @@ enum Tag : int {
 // Values are sent as bytes in chunks of at most 1 GiB.
 constexpr std::size_t chunk_bytes = std::size_t(1) << 30;
 
+// Sends the `count` values at `values`, as receive_vector() takes them.
 template <class T>
-void send_vector(const std::vector<T>& v, int to, Tag tag)
+void send_values(const T* values, std::size_t count, int to, Tag tag)
 {
   static_assert(std::is_trivially_copyable<T>::value, "plain values only");
-  const std::uint64_t n = v.size();
+  const std::uint64_t n = count;
   MPI_Send(&n, 1, MPI_UINT64_T, to, tag, MPI_COMM_WORLD);
-  const char* bytes = reinterpret_cast<const char*>(v.data());
-  const std::size_t total = v.size() * sizeof(T);
+  const char* bytes = reinterpret_cast<const char*>(values);
+  const std::size_t total = count * sizeof(T);
   for(std::size_t done = 0; done < total;) {
     const std::size_t k = (std::min)(chunk_bytes, total - done);
     MPI_Send(bytes + done, int(k), MPI_BYTE, to, tag, MPI_COMM_WORLD);
     done += k;
+  }
+}
+
+template <class T>
+void send_vector(const std::vector<T>& v, int to, Tag tag)
+{
+  send_values(v.data(), v.size(), to, tag);
+}
+
+// Values sent in chunks of any size, ended by an empty one: a sender
+// calls send_chunk() for each (empty ones are skipped), then
+// end_chunks(); the receiver gets each with receive_chunks().
+template <class T>
+void send_chunk(const T* values, std::size_t n, int to, Tag tag)
+{
+  if(n > 0) send_values(values, n, to, tag);
+}
+
+template <class T>
+void end_chunks(int to, Tag tag)
+{
+  send_values<T>(nullptr, 0, to, tag);
+}
+
+template <class T>
+std::vector<T> receive_vector(int from, Tag tag);
+
+// Hands each chunk from `from` to `take(values, n)` until the empty one.
+template <class T, class Take>
+void receive_chunks(int from, Tag tag, const Take& take)
+{
+  for(;;) {
+    const std::vector<T> chunk = receive_vector<T>(from, tag);
+    if(chunk.empty()) return;
+    take(chunk.data(), chunk.size());
   }
 }
 

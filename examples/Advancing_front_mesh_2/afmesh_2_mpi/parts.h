@@ -243,6 +243,10 @@ AFM::Mesh_return_code mesh_with(const afmesh_2::Options& opt, Part_mesher<K>& me
 {
   if(sink != nullptr) mesher.set_output_sink(sink);
   mesher.set_pocket_priority(!opt.no_pocket_priority);
+  // --time-limit and --max-steps: each rank's, for its part (the front
+  // left is closed on existing points, as afmesh_2 does)
+  mesher.set_time_limit(opt.time_limit);
+  mesher.set_iteration_limit(opt.max_steps);
   // the mesher's state, the pocket priority with it, from the checkpoint
   if(ck.resume) mesher.resume(ck.file);
   if(ck.every > 0) mesher.set_checkpoint(ck.every, ck.file, ck.user_data, ck.stop);
@@ -275,6 +279,27 @@ AFM::Mesh_return_code mesh_whole(const afmesh_2::Options& opt, afmesh_2::Input<K
   mesher.set_seeds(in.seeds.begin(), in.seeds.end());
   mesher.set_constraint_splitting(false); // load_input() did it
   return mesh_with<K>(opt, mesher, sink, ck, st);
+}
+
+// --smooth N on a part meshed in memory, before its interfaces are merged:
+// afmesh_2's smoother, its vertices on constrained edges held (the input's
+// segments and the cuts: the interfaces stay as the neighbours have them)
+// and its free input points too; the seams are smoothed when the
+// interfaces are merged (bands.h).
+template <class K>
+AFM::Smoothing_statistics smooth_part(const afmesh_2::Options& opt, CDT<K>& part_cdt,
+                                      const std::vector<typename K::Point_2>& free_points)
+{
+  typedef typename CDT<K>::Vertex_handle Vertex_handle;
+  if(opt.smooth == 0 || part_cdt.dimension() != 2) return AFM::Smoothing_statistics();
+  std::set<std::pair<double, double> > held_points;
+  for(const auto& p : free_points) held_points.insert({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
+  auto held = boost::make_function_property_map<Vertex_handle>([&held_points](Vertex_handle v) {
+    return held_points.count({CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}) > 0;
+  });
+  const auto np = CGAL::parameters::number_of_iterations(opt.smooth).vertex_is_constrained_map(held);
+  return opt.smoother == "laplacian" ? CGAL::laplacian_smooth_mesh_2(part_cdt, np)
+                                     : CGAL::quality_smooth_mesh_2(part_cdt, np);
 }
 
 } // namespace afmesh_2_mpi

@@ -48,6 +48,8 @@ struct Rank_figures
   int code;
   bool resumed, from_checkpoint;
   std::uint64_t checkpoints;
+  double smoothing;
+  std::uint64_t smoothing_moves, smoothing_flips;
 };
 
 // What rank 0 reports on: the run's decomposition, the ranks' figures, and
@@ -99,6 +101,11 @@ nlohmann::ordered_json statistics_json(const Run_summary<K>& s)
                         {"interface_flips", r.flips}, {"seam_vertices", r.seam_vertices},
                         {"band_widenings", r.widenings}, {"band_bytes_sent", r.band_bytes_sent},
                         {"peak_memory_mb", f.peak_memory_mb}, {"return_code", f.code}});
+    if(s.opt.smooth > 0) {
+      per_rank.back()["smoothing_time"] = f.smoothing;
+      per_rank.back()["smoothing_moves"] = f.smoothing_moves;
+      per_rank.back()["smoothing_flips"] = f.smoothing_flips;
+    }
     if(s.opt.stream) {
       per_rank.back()["held_triangles"] = r.held_triangles;
       per_rank.back()["resumed_part"] = f.resumed;
@@ -111,6 +118,14 @@ nlohmann::ordered_json statistics_json(const Run_summary<K>& s)
   // afmesh_2's names for the same counts
   j["vertices"] = s.vertices();
   j["triangles"] = s.triangles();
+  if(s.opt.smooth > 0) {
+    std::uint64_t moves = 0, flips = 0;
+    for(const Rank_figures& f : s.ranks) {
+      moves += f.smoothing_moves;
+      flips += f.smoothing_flips;
+    }
+    j["smoothing"] = {{"method", s.opt.smoother}, {"passes", s.opt.smooth}, {"moves", moves}, {"flips", flips}};
+  }
   if(s.quality != nullptr) {
     j["quality"] = afmesh_2::quality_json(*s.quality);
     j["quality_time"] = s.quality_time;
@@ -126,9 +141,13 @@ nlohmann::ordered_json statistics_json(const Run_summary<K>& s)
 template <class K>
 std::string report_text(const Run_summary<K>& s, const std::string& boundary)
 {
-  double meshing = 0, interfaces = 0, writing = 0, least_memory = 0, most_memory = 0;
-  std::uint64_t fewest = ~std::uint64_t(0), most = 0, band = 0, flips = 0, seam = 0, held = 0;
+  double meshing = 0, smoothing = 0, interfaces = 0, writing = 0, least_memory = 0, most_memory = 0;
+  std::uint64_t fewest = ~std::uint64_t(0), most = 0, band = 0, flips = 0, seam = 0, held = 0, moves = 0,
+                smoothing_flips = 0;
   for(const Rank_figures& f : s.ranks) {
+    smoothing = (std::max)(smoothing, f.smoothing);
+    moves += f.smoothing_moves;
+    smoothing_flips += f.smoothing_flips;
     meshing = (std::max)(meshing, f.meshing);
     interfaces = (std::max)(interfaces, f.interfaces);
     writing = (std::max)(writing, f.writing);
@@ -145,8 +164,13 @@ std::string report_text(const Run_summary<K>& s, const std::string& boundary)
   os << std::setprecision(4);
   os << s.opt.input << ": " << s.vertices() << " vertices, " << s.triangles() << " triangles"
      << (s.opt.stream ? " streamed" : "") << " on " << s.ranks.size() << " ranks in " << s.total_time
-     << " s (slowest rank: meshing " << meshing << " s, interfaces " << interfaces << " s, writing " << writing
+     << " s (slowest rank: meshing " << meshing << " s, ";
+  if(s.opt.smooth > 0) os << "smoothing " << smoothing << " s, ";
+  os << "interfaces " << interfaces << " s, writing " << writing
      << " s)\n";
+  if(s.opt.smooth > 0)
+    os << "  each part smoothed before the interfaces were merged: " << s.opt.smooth << " " << s.opt.smoother
+       << " passes, " << moves << " moves, " << smoothing_flips << " flips\n";
   if(s.quality != nullptr) afmesh_2::print_quality_lines(os, "", *s.quality);
   else os << "  no quality figures with --stream (as afmesh_2 --stream)\n";
   os << "  " << boundary << "\n";

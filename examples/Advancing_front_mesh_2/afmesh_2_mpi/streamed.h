@@ -28,6 +28,7 @@
 #ifndef AFMESH_2_MPI_STREAMED_H
 #define AFMESH_2_MPI_STREAMED_H
 
+#include "merged.h"
 #include "tags.h"
 
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Streaming_files.h>
@@ -876,6 +877,101 @@ void write_streamed_piece(const std::string& pvtu, const Part_stream<K>& s, cons
     if(os.fail()) throw std::runtime_error("cannot write " + name);
   }
   if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks, s.tags().has_regions());
+}
+
+// This rank's share of the merged file (--merge with --stream), read from
+// its scratch files a chunk at a time as rank 0 takes each array: the
+// owned points in the order of their numbers, the triangles and segments by
+// number, the markers (as a piece's, from the points' coordinates in the
+// scratch file) and the region attributes.
+template <class K>
+Merged_share merged_share(const Part_stream<K>& s, const Streamed_share& m)
+{
+  typedef std::function<void(const double*, std::size_t)> Put_doubles;
+  typedef std::function<void(const std::uint64_t*, std::size_t)> Put_numbers;
+  typedef std::function<void(const std::int32_t*, std::size_t)> Put_markers;
+  // a quarter of a piece's chunks: each is copied once more (its numbers
+  // widened to 64 bits) before it is sent
+  const std::size_t chunk = std::size_t(1) << 18;
+  Merged_share share;
+  share.owned_vertices = m.owned.total();
+  share.triangles = m.triangle_count();
+  share.segments = s.segments().size() + m.segments.size();
+  share.regions = s.tags().has_regions();
+  auto number = [&m](std::uint64_t i) {
+    if(m.owned.test(i)) return m.first_id + m.owned.rank(i);
+    const std::uint64_t* below = m.id_from_below.find(i);
+    if(below == nullptr) throw std::logic_error("a vertex of the rank's share has no number");
+    return *below;
+  };
+  // each owned point, where it is (`moved`: by the seam smoothing) and
+  // where the scratch file has it
+  auto each_owned_point = [&s, &m, chunk](const std::function<void(double, double, double, double)>& f,
+                                          const std::function<void()>& chunk_done) {
+    std::uint64_t i = 0;
+    s.points_file().template read<double>(2 * chunk, [&](const double* xy, std::size_t n) {
+      for(std::size_t k = 0; k + 1 < n; k += 2, ++i) {
+        if(!m.owned.test(i)) continue;
+        const std::array<double, 2>* p = m.moved.find(i);
+        f(p != nullptr ? (*p)[0] : xy[k], p != nullptr ? (*p)[1] : xy[k + 1], xy[k], xy[k + 1]);
+      }
+      chunk_done();
+    });
+    if(i != m.vertices) throw std::runtime_error("the scratch file " + s.points_file().name() + " is short");
+    for(const auto& p : m.new_points)
+      if(m.owned.test(i++)) f(p[0], p[1], p[0], p[1]);
+    chunk_done();
+  };
+  share.points = [each_owned_point](const Put_doubles& put) {
+    std::vector<double> xy;
+    each_owned_point([&xy](double x, double y, double, double) { xy.insert(xy.end(), {x, y}); },
+                     [&] { put(xy.data(), xy.size()); xy.clear(); });
+  };
+  share.point_markers = [each_owned_point, &s](const Put_markers& put) {
+    std::vector<std::int32_t> k;
+    each_owned_point([&](double, double, double x, double y) { k.push_back(std::int32_t(s.tags().marker_at(x, y))); },
+                     [&] { put(k.data(), k.size()); k.clear(); });
+  };
+  share.triangle_numbers = [&s, &m, chunk, number](const Put_numbers& put) {
+    std::vector<std::uint64_t> t;
+    std::uint64_t read = 0;
+    s.triangles_file().template read<std::uint32_t>(3 * chunk, [&](const std::uint32_t* v, std::size_t n) {
+      for(std::size_t k = 0; k < n; ++k) t.push_back(number(v[k]));
+      read += n;
+      put(t.data(), t.size());
+      t.clear();
+    });
+    if(read != 3 * m.streamed_triangles)
+      throw std::runtime_error("the scratch file " + s.triangles_file().name() + " is short");
+    for(const auto& tri : m.triangles)
+      for(std::uint64_t v : tri) t.push_back(number(v));
+    put(t.data(), t.size());
+  };
+  auto each_segment = [&s, &m](const std::function<void(const std::array<std::uint64_t, 3>&)>& f) {
+    for(const auto& seg : s.segments()) f(seg);
+    for(const auto& seg : m.segments) f(seg);
+  };
+  share.segment_numbers = [each_segment, number](const Put_numbers& put) {
+    std::vector<std::uint64_t> ends;
+    each_segment([&](const std::array<std::uint64_t, 3>& seg) { ends.insert(ends.end(), {number(seg[0]), number(seg[1])}); });
+    put(ends.data(), ends.size());
+  };
+  share.segment_markers = [each_segment](const Put_markers& put) {
+    std::vector<std::int32_t> k;
+    each_segment([&](const std::array<std::uint64_t, 3>& seg) { k.push_back(std::int32_t(std::int64_t(seg[2]))); });
+    put(k.data(), k.size());
+  };
+  share.triangle_regions = [&s, &m, chunk](const Put_doubles& put) {
+    std::uint64_t read = 0;
+    s.regions_file().template read<double>(chunk, [&](const double* a, std::size_t n) {
+      put(a, n);
+      read += n;
+    });
+    if(read != m.streamed_triangles)
+      throw std::runtime_error("the scratch file " + s.regions_file().name() + " is short");
+    put(m.regions.data(), m.regions.size());
+  };
+  return share;
 }
 
 } // namespace afmesh_2_mpi
