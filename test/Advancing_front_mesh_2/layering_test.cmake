@@ -26,6 +26,7 @@ set(AFM_LAYERS
   "0 CGAL/Advancing_front_mesh_2/internal/Compact_id_list.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Coordinate_scaling.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Double_geometry.h"
+  "0 CGAL/Advancing_front_mesh_2/internal/Durable_files.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Finished_faces_check.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Flat_hash_map.h"
   "0 CGAL/Advancing_front_mesh_2/internal/Front_predicates.h"

@@ -12,6 +12,7 @@
 #include <CGAL/Advancing_front_mesher_2.h>
 #include <CGAL/Advancing_front_mesh_2/Kd_tree_point_index.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Durable_files.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -495,6 +496,24 @@ AFM_TEST_CASE(test_streaming_checkpoint_consistency_is_checked)
   // or tree bounds, which the mesher tolerates)
   AFM_CHECK_MSG(refused * 4 > body / 4, refused);
   std::filesystem::remove_all(dir);
+}
+
+// A checkpoint is made durable before it is renamed into place:
+// sync_file() succeeds on a written file and fails on one that is not
+// there (so a checkpoint whose temporary file vanished is not renamed).
+AFM_TEST_CASE(test_durable_files)
+{
+  const std::filesystem::path dir = scratch_directory();
+  const std::string written = (dir / "durable.bin").string();
+  {
+    std::ofstream os(written, std::ios::binary);
+    os << "content";
+  }
+  AFM_CHECK(AFM::internal::sync_file(written));
+  AFM_CHECK(!AFM::internal::sync_file((dir / "not-there.bin").string()));
+  AFM::internal::sync_directory_of(written); // must not throw or fail
+  AFM::internal::sync_directory_of("relative-name-in-the-working-directory");
+  std::filesystem::remove(written);
 }
 
 // A checkpoint that cannot be written stops refine_mesh() with

@@ -16,6 +16,7 @@
 #include <CGAL/Advancing_front_mesh_2/Checkpoint_info.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Binary_io.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Checkpoint_support.h>
+#include <CGAL/Advancing_front_mesh_2/internal/Durable_files.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_2.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_triangles.h>
 #include <CGAL/Advancing_front_mesh_2/internal/Front_visibility.h>
@@ -219,8 +220,9 @@ double Checkpoint_io<F, V, T>::exact_double(const FT& v)
   return d;
 }
 
-// Written to `file_name.tmp` and renamed, so that a run killed while
-// writing leaves the previous checkpoint; a partial file is removed.
+// Written to `file_name.tmp`, made durable and renamed, so that a run
+// killed while writing, or a power loss, leaves the previous checkpoint; a
+// partial file is removed.
 template <class F, class V, class T>
 void Checkpoint_io<F, V, T>::write(const std::string& file_name, const std::string& user_data,
                                    const std::string& sink_state)
@@ -236,8 +238,10 @@ void Checkpoint_io<F, V, T>::write(const std::string& file_name, const std::stri
     if(!os) throw Checkpoint_error(tmp + ": cannot write the checkpoint");
     os.close();
     if(!os) throw Checkpoint_error(tmp + ": cannot write the checkpoint");
+    if(!sync_file(tmp)) throw Checkpoint_error(tmp + ": cannot make the checkpoint durable (fsync)");
     if(std::rename(tmp.c_str(), file_name.c_str()) != 0)
       throw Checkpoint_error(tmp + ": cannot rename it to " + file_name);
+    sync_directory_of(file_name);
   } catch(...) {
     std::remove(tmp.c_str()); // a partial file would only mislead
     throw;

@@ -12,6 +12,8 @@
 
 #include <CGAL/license/Advancing_front_mesh_2.h>
 
+#include <CGAL/Advancing_front_mesh_2/internal/Durable_files.h>
+
 #include <CGAL/Advancing_front_mesh_2/IO/internal/Mesh_writer_common.h>
 
 #include <algorithm>
@@ -437,26 +439,14 @@ inline void streaming_copy_part(Streaming_file& out, const std::string& part, st
 // elsewhere, and on file systems that refuse it, this is skipped).
 inline void streaming_sync_directories(const std::vector<std::string>& files)
 {
-#if defined(CGAL_ADVANCING_FRONT_MESH_2_HAS_POSIX_FSYNC)
   std::vector<std::string> dirs;
   for(const std::string& f : files) {
-    std::string d = std::filesystem::path(f).parent_path().string();
-    if(d.empty())
-      d = ".";
+    const std::string d = std::filesystem::path(f).parent_path().string();
     if(std::find(dirs.begin(), dirs.end(), d) != dirs.end())
       continue;
     dirs.push_back(d);
-    const int fd = ::open(d.c_str(), O_RDONLY);
-    if(fd >= 0) {
-      if(::fsync(fd) != 0) {
-        // not all file systems can sync a directory; the files are synced
-      }
-      ::close(fd);
-    }
+    Advancing_front_mesh_2::internal::sync_directory_of(f);
   }
-#else
-  static_cast<void>(files);
-#endif
 }
 
 } // namespace internal
