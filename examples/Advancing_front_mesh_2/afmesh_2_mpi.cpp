@@ -57,6 +57,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -121,10 +122,21 @@ inline Mpi_options parse(const std::vector<std::string>& args)
       m.stop_after_checkpoint = true;
       continue;
     }
-    // the options that make the parts (not those that only say what to
-    // print or how to write it, which a resumed run may change)
-    if(a != "--stop-after-meshing" && a != "--resume" && a != "--stats" && a != "--vtu-ascii")
-      m.arguments_digest = digest_bytes(a.c_str(), a.size() + 1, m.arguments_digest);
+    // the options that make the parts go into the digest; not those that
+    // only say what to print or how to write it, nor the limits, which
+    // apply to the session they are given in (as afmesh_2 --resume takes
+    // them): a resumed run may change these
+    const char* session_value = nullptr;
+    for(const char* f : {"--time-limit", "--max-steps", "--histogram"})
+      if(a == f || a.compare(0, std::strlen(f) + 1, std::string(f) + "=") == 0) session_value = f;
+    if(session_value != nullptr) {
+      rest.push_back(a);
+      if(a == session_value && i + 1 < args.size()) rest.push_back(args[++i]);
+      continue;
+    }
+    const bool session_flag =
+      a == "--stop-after-meshing" || a == "--resume" || a == "--stats" || a == "--report" || a == "--vtu-ascii";
+    if(!session_flag) m.arguments_digest = digest_bytes(a.c_str(), a.size() + 1, m.arguments_digest);
     if(a == "--help" || a == "-h") {
       m.help = true;
       return m;
@@ -156,7 +168,17 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   }
   if(no_output && !m.outputs.empty()) throw afmesh_2::Usage_error("--no-output cannot be combined with -o");
   if(!no_output) rest.push_back("--no-output");
-  m.opt = afmesh_2::parse(rest);
+  try {
+    m.opt = afmesh_2::parse(rest);
+  } catch(const afmesh_2::Usage_error& e) {
+    // afmesh_2's --checkpoint-every K FILE: the FILE is left over as a
+    // second input
+    const std::string what = e.what();
+    if(m.checkpoint_every > 0 && what.find("too many positional options") != std::string::npos)
+      throw afmesh_2::Usage_error(what + " (afmesh_2_mpi takes --checkpoint-every K without a file: the "
+                                         "checkpoints are beside the pieces)");
+    throw;
+  }
   m.opt.stream = stream;
   const afmesh_2::Options& o = m.opt;
   const char* refused = o.checkpoint_every > 0     ? "--checkpoint-every K FILE (here: --checkpoint-every K, "
@@ -432,6 +454,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   } catch(const std::invalid_argument& e) {
     throw std::runtime_error(std::string("meshing the part: ") + e.what());
   }
+  const double t_meshing = seconds_since(t_mesh);
   // --smooth: each part smoothed in memory before its interfaces are
   // merged, its cuts held (the one part: as afmesh_2 smooths)
   AFM::Smoothing_statistics smoothing;
@@ -446,16 +469,15 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     stream->close();
     stream->keep();
   }
-  const double t_meshing = seconds_since(t_mesh);
   const std::uint64_t parts_resumed = sum_over_ranks(resumed ? 1 : 0);
   const std::uint64_t parts_stopped = sum_over_ranks(stopped ? 1 : 0);
   const std::uint64_t timed_out = sum_over_ranks(rc == AFM::TIME_LIMIT_REACHED ? 1 : 0);
   const std::uint64_t out_of_steps = sum_over_ranks(rc == AFM::ITERATION_LIMIT_REACHED ? 1 : 0);
-  if(rank == 0 && timed_out + out_of_steps > 0)
-    std::cerr << "afmesh_2_mpi: note: " << m.opt.input << ": "
-              << (timed_out > 0 ? "--time-limit" : "--max-steps") << " reached on " << timed_out + out_of_steps
-              << " of " << d.parts
-              << " parts: the rest of their fronts was closed on existing points (valid, coarser there)\n";
+  for(const auto& limit : {std::make_pair("--time-limit", timed_out), std::make_pair("--max-steps", out_of_steps)})
+    if(rank == 0 && limit.second > 0)
+      std::cerr << "afmesh_2_mpi: note: " << m.opt.input << ": " << limit.first << " reached on " << limit.second
+                << " of " << d.parts
+                << " parts: the rest of their fronts was closed on existing points (valid, coarser there)\n";
   if(parts_stopped > 0) {
     if(rank == 0)
       std::cerr << "afmesh_2_mpi: note: " << parts_stopped << " of " << d.parts
@@ -526,13 +548,15 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   getrusage(RUSAGE_SELF, &usage);
   const Rank_figures mine{t_meshing, t_interfaces, t_writing, double(usage.ru_maxrss) / 1024, share, int(rc),
                           resumed, ck.resume, std::uint64_t(st.checkpoints_written), t_smoothing,
-                          std::uint64_t(smoothing.moves), std::uint64_t(smoothing.flips)};
+                          std::uint64_t(smoothing.passes), std::uint64_t(smoothing.moves),
+                          std::uint64_t(smoothing.rejected_moves), std::uint64_t(smoothing.flips)};
   const std::vector<Rank_figures> all = gather_to_root(mine, ranks);
   if(rank != 0) return 0;
   const Run_summary<K> summary{m.opt, d, fewer_parts_reason, all, want_quality ? &quality : nullptr,
                                t_decomposition, t_quality, seconds_since(t_start)};
   if(m.opt.report) afmesh_2::print_report_text(m.opt, report_text(summary, afmesh_2::boundary_summary(m.opt, in)));
-  if(m.opt.stats) std::cout << statistics_json(summary).dump() << std::endl;
+  // input names that are not UTF-8 with replacement characters, as afmesh_2
+  if(m.opt.stats) afmesh_2::print_statistics(statistics_json(summary));
   if(!m.opt.histogram.empty()) {
     std::ofstream os(m.opt.histogram);
     AFM::IO::write_quality_histogram_SVG(os, quality, m.opt.input);
@@ -559,8 +583,8 @@ int main(int argc, char* argv[])
     m = parse(std::vector<std::string>(argv + 1, argv + argc));
     if(m.help && mpi.rank == 0)
       std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
-                   "                    (-o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output)\n"
-                   "                    [--stream [--checkpoint-every K] [--resume]]\n"
+                   "                    (-o OUT.pvtu | --merge -o OUT.off|OUT.vtu) [--stream [--checkpoint-every K]\n"
+                   "                    [--resume]] | --no-output\n"
                    "                    [--stats] [--report] [--histogram OUT.svg]\n\n"
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"

@@ -95,22 +95,36 @@ def quality(points, triangles, h):
     edges = np.unique(np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]),
                               axis=1), axis=0)
     over = np.linalg.norm(points[edges[:, 0]] - points[edges[:, 1]], axis=1) / h
-    return {"min_radius_ratio": ordered[0], "mean_radius_ratio": ratio.mean(),
+    p = points[triangles]
+    sides = [np.linalg.norm(p[:, (k + 1) % 3] - p[:, (k + 2) % 3], axis=1) for k in range(3)]
+    angles = np.concatenate([np.degrees(np.arccos(np.clip(
+        (sides[(k + 1) % 3] ** 2 + sides[(k + 2) % 3] ** 2 - sides[k] ** 2) / (2 * sides[(k + 1) % 3] * sides[(k + 2) % 3]),
+        -1, 1))) for k in range(3)])
+    return {"min_angle_degrees": angles.min(), "max_angle_degrees": angles.max(),
+            "share_angles_below_30": np.mean(angles < 30),
+            "angle_histogram_10_degrees": (angles, 10, 1e-9),"min_radius_ratio": ordered[0], "mean_radius_ratio": ratio.mean(),
             "share_radius_ratio_above_0_9": np.mean(ratio > 0.9),
             "radius_ratio_p1": ordered[int(0.01 * (n - 1))], "radius_ratio_p5": ordered[int(0.05 * (n - 1))],
             "radius_ratio_median": ordered[int(0.5 * (n - 1))],
-            "radius_ratio_histogram": np.bincount(np.minimum(19, (ratio * 20).astype(int)), minlength=20),
+            "radius_ratio_histogram": (ratio, 0.05, 1e-12),
             "min_edge_over_size": over.min(), "max_edge_over_size": over.max(), "mean_edge_over_size": over.mean(),
             "share_edges_within_sqrt2": np.mean((over >= math.sqrt(0.5)) & (over <= math.sqrt(2)))}
 
 
 def same_quality(label, reported, computed):
     """--stats' quality against quality(): the same to rounding (the ratios
-    by another formula), the histogram within two triangles."""
+    and angles by other formulas: a histogram's count below each bin's
+    upper bound must lie between the counts below it, less and plus the
+    rounding; equilateral angles are 60 degrees, a bound, up to it)."""
     for key, value in computed.items():
-        if key == "radius_ratio_histogram":
-            moved = int(np.abs(np.array(reported[key]) - value).sum())
-            check(moved <= 2, "%s: radius ratio histogram %s, computed %s" % (label, reported[key], value.tolist()))
+        if isinstance(value, tuple):
+            values, width, rounding = value
+            below = np.cumsum(reported[key])[:-1]
+            bounds = width * np.arange(1, len(reported[key]))
+            low = np.searchsorted(np.sort(values), bounds - rounding)
+            high = np.searchsorted(np.sort(values), bounds + rounding)
+            check(below[-1] + reported[key][-1] == len(values) and np.all((low <= below) & (below <= high)),
+                  "%s: %s %s, computed from %d values" % (label, key, reported[key], len(values)))
         else:
             check(abs(reported[key] - value) <= 1e-9 * max(1, abs(value)),
                   "%s: quality %s is %r, computed %r" % (label, key, reported[key], value))
@@ -303,7 +317,14 @@ kept = sorted(os.listdir("kept"))
 check("sm_0.vtu.part" in kept and "sm_1.vtu.part" in kept and "sm.vtu" not in kept,
       "--stop-after-meshing with --merge: %s" % kept)
 os.remove("kept/sm_0.vtu.part")
-mpi(2, "square.poly", "--size", "0.005", "--stream", "--merge", "--resume", "-o", "kept/sm.vtu")
+# what only says what to print, and the limits (of the session, as for
+# afmesh_2 --resume), may change: the kept part is still taken
+r = mpi(2, "square.poly", "--size", "0.005", "--stream", "--merge", "--resume", "-o", "kept/sm.vtu", "--stats",
+        "--report", "--max-steps", "100000000")
+stats = json.loads(r.stdout)
+check([q["resumed_part"] for q in stats["per_rank"]] == [False, True] and "streamed on 2 ranks" in r.stderr,
+      "--resume with --merge, --report and --max-steps: parts taken %s" %
+      [q["resumed_part"] for q in stats["per_rank"]])
 check(open("kept/sm.vtu", "rb").read() == open("kept/full_merged.vtu", "rb").read(),
       "--resume with --merge: not the uninterrupted run's file")
 check(not [f for f in os.listdir("kept") if f.startswith("sm_") or f.startswith("full_merged_")],
@@ -393,6 +414,8 @@ for args, message in ((("square.poly", "--checkpoint-every", "10"), "add --strea
     check(message in r.stderr, "%s: %s" % (" ".join(args), r.stderr))
 r = mpi(2, *square, "-o", "kept/e.pvtu", "--checkpoint-every", code=2)
 check("requires an argument" in r.stderr, "--checkpoint-every without K: " + r.stderr)
+r = mpi(2, *square, "-o", "kept/e.pvtu", "--checkpoint-every", "5000", "kept/e.checkpoint", code=2)
+check("without a file" in r.stderr, "afmesh_2's --checkpoint-every K FILE: " + r.stderr)
 
 # the markers and regions of afmesh_2's outputs (an input of three regions
 # with segment and vertex markers, cut by 3 ranks): the pieces, the merged
@@ -582,6 +605,22 @@ check("--stream cannot be combined with --histogram" in r.stderr, "--histogram w
 r = mpi(2, "airfoil.poly", "--size", "0.02", "--no-output", "--histogram", "no_such_directory/h.svg", code=3)
 check("cannot write no_such_directory/h.svg" in r.stderr, "a histogram that cannot be written: " + r.stderr)
 
+# --merge with --stream sends a share in chunks of 2^18 points or
+# triangles: 1.1 million triangles on 2 ranks (about 280,000 points and
+# 550,000 triangles a rank) cross both sizes; the file is the pieces put
+# together
+run(make_input, "square-with-hole", "fine.poly", "0.01")
+mpi(2, "fine.poly", "--size", "0.0013", "--stream", "-o", "streamed/fine.pvtu")
+mpi(2, "fine.poly", "--size", "0.0013", "--stream", "--merge", "-o", "streamed/fine.vtu")
+pieces = read_pieces("streamed/fine.pvtu", 2)
+if pieces is not None:
+    m = meshio.read("streamed/fine.vtu")
+    check(len(pieces[0]) > 2 * 2 ** 18 and len(pieces[1]) > 4 * 2 ** 18,
+          "the fine square: %d points, %d triangles" % (len(pieces[0]), len(pieces[1])))
+    check(np.array_equal(m.points[:, :2], pieces[0]) and np.array_equal(m.cells_dict["triangle"], pieces[1]),
+          "the fine square: --merge with --stream is not the pieces put together")
+    del m, pieces
+
 # --smooth: each part smoothed before its interfaces are merged, its cuts
 # held; against afmesh_2 --threads 2 --smooth 3, which smooths the merged
 # mesh: the same counts, the share above 0.9 within half a point
@@ -601,9 +640,9 @@ check(abs(mine - theirs) <= 0.5 and mine > 100 * unsmoothed["quality"]["share_ra
 r = mpi(2, "square.poly", "--size", "0.005", "--smooth", "3", "--stream", "-o", "streamed/x.pvtu", code=2)
 check("--stream cannot be combined with --smooth" in r.stderr, "--smooth with --stream: " + r.stderr)
 
-# --max-steps (and --time-limit, which works the same way): each rank's
-# mesher stops there and closes the rest of its front on existing points;
-# the mesh is valid, in memory and streamed
+# --max-steps and --time-limit: each rank's mesher stops there and closes
+# the rest of its front on existing points; the mesh is valid, in memory
+# and streamed
 r = mpi(2, "square.poly", "--size", "0.005", "--max-steps", "3000", "--merge", "-o", "limited.off", "--stats")
 stats = json.loads(r.stdout)
 valid("square.poly", "limited.off", "square, 2 ranks, --max-steps 3000")
@@ -611,6 +650,9 @@ check("--max-steps reached on 2 of 2 parts" in r.stderr and all(q["return_code"]
       stats["triangles"] < 0.5 * len(serial_triangles),
       "--max-steps 3000: %d triangles, codes %s, %s" %
       (stats["triangles"], [q["return_code"] for q in stats["per_rank"]], r.stderr))
+r = mpi(2, "square.poly", "--size", "0.005", "--time-limit", "1e-6", "--merge", "-o", "timed.off")
+valid("square.poly", "timed.off", "square, 2 ranks, --time-limit 1e-6")
+check("--time-limit reached on 2 of 2 parts" in r.stderr, "--time-limit 1e-6: " + r.stderr)
 mpi(2, "square.poly", "--size", "0.005", "--max-steps", "3000", "--stream", "-o", "streamed/limited.pvtu")
 pieces = read_pieces("streamed/limited.pvtu", 2)
 if pieces is not None:

@@ -75,67 +75,64 @@ inline std::array<double, 3> reduced_percentiles(const std::vector<double>& rati
   return values;
 }
 
-// One edge of a share, by its vertices' global numbers (low first), and
-// where a triangle of the share holds it (3 * triangle + the vertex opposite).
-struct Share_edge
-{
-  std::uint64_t low, high, where;
-  bool operator<(const Share_edge& o) const { return low != o.low ? low < o.low : high < o.high; }
-  bool same(const Share_edge& o) const { return low == o.low && high == o.high; }
-};
-
 // The figures of the mesh whose share on this rank is `m`, with the edge
 // length over the size `sizing` gives (its point type Point_2); whole on
-// rank 0, which every rank must call it with.
+// rank 0, which every rank must call it with. Memory: 8 bytes a triangle
+// for its ratio and 24 for its edges (three 64-bit keys of two local
+// vertex indices each).
 template <class Point_2, class Sizing>
 AFM::Mesh_quality mesh_quality_over_ranks(const Rank_mesh& m, const Sizing& sizing, int rank, int ranks)
 {
+  if(m.points.size() >> 32 != 0) throw std::length_error("a share of more than 2^32 vertices in memory");
   AFM::internal::Triangle_quality_sums t;
   std::vector<double> ratios;
   ratios.reserve(m.triangles.size());
-  std::vector<Share_edge> edges;
+  // each edge of each triangle, by its local vertex indices (low, high)
+  std::vector<std::uint64_t> edges;
   edges.reserve(3 * m.triangles.size());
-  for(std::size_t i = 0; i < m.triangles.size(); ++i) {
-    const auto& tri = m.triangles[i];
+  for(const auto& tri : m.triangles) {
     double x[3], y[3];
     for(std::size_t k = 0; k < 3; ++k) {
       x[k] = m.points[tri[k]][0];
       y[k] = m.points[tri[k]][1];
-      const std::uint64_t a = m.global_id[tri[(k + 1) % 3]], b = m.global_id[tri[(k + 2) % 3]];
-      edges.push_back({(std::min)(a, b), (std::max)(a, b), 3 * i + k});
+      const std::uint64_t a = tri[(k + 1) % 3], b = tri[(k + 2) % 3];
+      edges.push_back((std::min)(a, b) << 32 | (std::max)(a, b));
     }
     ratios.push_back(t.add(x, y));
   }
   // the edges held twice in the share, counted once; those held once, on
-  // its boundary, sent to the rank above, which leaves out those it holds
-  // too
+  // its boundary, sent to the rank above by their global numbers, which
+  // leaves out those it holds once too
   std::sort(edges.begin(), edges.end());
   AFM::internal::Edge_size_sums e;
-  auto add = [&](const Share_edge& s) {
-    const auto& tri = m.triangles[s.where / 3];
-    const std::size_t k = s.where % 3;
-    const auto& a = m.points[tri[(k + 1) % 3]];
-    const auto& b = m.points[tri[(k + 2) % 3]];
+  auto add = [&](std::uint64_t edge) {
+    const auto& a = m.points[edge >> 32];
+    const auto& b = m.points[edge & 0xffffffffu];
     e.add(AFM::internal::edge_over_size<Point_2>(sizing, a[0], a[1], b[0], b[1]));
   };
-  std::vector<Share_edge> once;
+  std::vector<std::uint64_t> once;
   for(std::size_t i = 0; i < edges.size();) {
     std::size_t j = i + 1;
-    while(j < edges.size() && edges[j].same(edges[i])) ++j;
+    while(j < edges.size() && edges[j] == edges[i]) ++j;
     if(j - i > 2) throw std::logic_error("an edge of the rank's share is held by more than two triangles");
     if(j - i == 2) add(edges[i]);
     else once.push_back(edges[i]);
     i = j;
   }
-  std::vector<Share_edge>().swap(edges);
+  std::vector<std::uint64_t>().swap(edges);
+  auto numbers = [&m](std::uint64_t edge) {
+    const std::uint64_t a = m.global_id[edge >> 32], b = m.global_id[edge & 0xffffffffu];
+    return std::array<std::uint64_t, 2>{{(std::min)(a, b), (std::max)(a, b)}};
+  };
   std::vector<std::array<std::uint64_t, 2> > boundary;
-  for(const Share_edge& s : once) boundary.push_back({{s.low, s.high}});
+  for(std::uint64_t edge : once) boundary.push_back(numbers(edge));
+  std::sort(boundary.begin(), boundary.end());
   if(rank + 1 < ranks) send_vector(boundary, rank + 1, QUALITY_EDGES);
   const std::vector<std::array<std::uint64_t, 2> > below =
     rank > 0 ? receive_vector<std::array<std::uint64_t, 2> >(rank - 1, QUALITY_EDGES)
              : std::vector<std::array<std::uint64_t, 2> >();
-  for(std::size_t i = 0; i < once.size(); ++i)
-    if(!std::binary_search(below.begin(), below.end(), boundary[i])) add(once[i]);
+  for(std::uint64_t edge : once)
+    if(!std::binary_search(below.begin(), below.end(), numbers(edge))) add(edge);
 
   // the sums to rank 0
   std::vector<std::uint64_t> counts{t.triangles, t.above_0_9, t.sharp_angles, e.edges, e.within_sqrt2};

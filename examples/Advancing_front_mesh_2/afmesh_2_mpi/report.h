@@ -49,7 +49,7 @@ struct Rank_figures
   bool resumed, from_checkpoint;
   std::uint64_t checkpoints;
   double smoothing;
-  std::uint64_t smoothing_moves, smoothing_flips;
+  std::uint64_t smoothing_passes, smoothing_moves, smoothing_rejected_moves, smoothing_flips;
 };
 
 // What rank 0 reports on: the run's decomposition, the ranks' figures, and
@@ -119,12 +119,17 @@ nlohmann::ordered_json statistics_json(const Run_summary<K>& s)
   j["vertices"] = s.vertices();
   j["triangles"] = s.triangles();
   if(s.opt.smooth > 0) {
-    std::uint64_t moves = 0, flips = 0;
+    // afmesh_2's keys: the passes done (the most of any part), the moves,
+    // refused moves and flips of all parts
+    std::uint64_t passes = 0, moves = 0, rejected = 0, flips = 0;
     for(const Rank_figures& f : s.ranks) {
+      passes = (std::max)(passes, f.smoothing_passes);
       moves += f.smoothing_moves;
+      rejected += f.smoothing_rejected_moves;
       flips += f.smoothing_flips;
     }
-    j["smoothing"] = {{"method", s.opt.smoother}, {"passes", s.opt.smooth}, {"moves", moves}, {"flips", flips}};
+    j["smoothing"] = {{"method", s.opt.smoother}, {"passes", passes}, {"moves", moves}, {"rejected_moves", rejected},
+                      {"flips", flips}};
   }
   if(s.quality != nullptr) {
     j["quality"] = afmesh_2::quality_json(*s.quality);
@@ -176,7 +181,8 @@ std::string report_text(const Run_summary<K>& s, const std::string& boundary)
   os << "  " << boundary << "\n";
   os << "  " << s.d.parts << " parts";
   if(s.d.parts == 1) {
-    os << " (" << (s.d.one_part_reason.empty() ? s.fewer_parts_reason : s.d.one_part_reason) << ")";
+    const std::string& why = !s.d.one_part_reason.empty() ? s.d.one_part_reason : s.fewer_parts_reason;
+    os << " (" << (why.empty() ? std::string("one rank") : why) << ")";
   } else {
     os << " cut at " << (s.d.plan.axis == 0 ? "x =" : "y =");
     for(const auto& c : s.d.plan.cuts) os << " " << c.position;
