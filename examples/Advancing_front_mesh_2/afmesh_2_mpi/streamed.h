@@ -663,6 +663,14 @@ struct Streamed_share
   AFM::internal::Flat_hash_map<std::uint64_t, std::uint64_t> id_from_below{~std::uint64_t(0)};
   std::uint64_t vertices = 0, streamed_triangles = 0, first_id = 0;
   std::uint64_t triangle_count() const { return streamed_triangles + triangles.size(); }
+  // the global number of used vertex i: its own, or the rank below's
+  std::uint64_t number(std::uint64_t i) const
+  {
+    if(owned.test(i)) return first_id + owned.rank(i);
+    const std::uint64_t* below = id_from_below.find(i);
+    if(below == nullptr) throw std::logic_error("a vertex of the rank's share has no number");
+    return *below;
+  }
 };
 
 // The share of a streamed rank, its vertices numbered across the ranks (as
@@ -866,8 +874,7 @@ void write_streamed_piece(const std::string& pvtu, const Part_stream<K>& s, cons
       [&](std::string& raw) {
         for(std::uint64_t i = 0; i < m.used.size(); ++i) {
           if(!m.used.test(i)) continue;
-          const std::uint64_t* below = m.id_from_below.find(i);
-          put_index(os, raw, binary, true, below != nullptr ? *below : m.first_id + m.owned.rank(i), '\n');
+          put_index(os, raw, binary, true, m.number(i), '\n');
           if(raw.size() > chunk) flush(raw);
         }
         flush(raw);
@@ -898,12 +905,7 @@ Merged_share merged_share(const Part_stream<K>& s, const Streamed_share& m)
   share.triangles = m.triangle_count();
   share.segments = s.segments().size() + m.segments.size();
   share.regions = s.tags().has_regions();
-  auto number = [&m](std::uint64_t i) {
-    if(m.owned.test(i)) return m.first_id + m.owned.rank(i);
-    const std::uint64_t* below = m.id_from_below.find(i);
-    if(below == nullptr) throw std::logic_error("a vertex of the rank's share has no number");
-    return *below;
-  };
+  auto number = [&m](std::uint64_t i) { return m.number(i); };
   // each owned point, where it is (`moved`: by the seam smoothing) and
   // where the scratch file has it
   auto each_owned_point = [&s, &m, chunk](const std::function<void(double, double, double, double)>& f,
