@@ -36,15 +36,18 @@
 // --stream, no quality figures.
 //
 // The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
-// MPI: --min-angle, --keep-segments, --threads, --kernel other than epick,
-// and the formats other than .pvtu, .off and .vtu: they are refused (exit
-// 2). --smooth smooths each part before its interfaces are merged, its
-// cuts held; --time-limit and --max-steps limit each rank's mesher.
+// MPI: --keep-segments, --threads, --kernel other than epick, and the
+// formats other than .pvtu, .off and .vtu: they are refused (exit 2).
+// --smooth smooths each part before its interfaces are merged, its cuts
+// held; --min-angle refines each rank's share after the merge, in rounds
+// with its neighbours (afmesh_2_mpi/min_angle.h); --time-limit and
+// --max-steps limit each rank's mesher.
 //
 // Exit codes as afmesh_2's: 0 success; 1 invalid input; 2 bad usage; 3 an
 // output that could not be written, or an internal error.
 #include "afmesh_2_mpi/channel.h"
 #include "afmesh_2_mpi/merged.h"
+#include "afmesh_2_mpi/min_angle.h"
 #include "afmesh_2_mpi/quality.h"
 #include "afmesh_2_mpi/report.h"
 #include "afmesh_2_mpi/streamed.h"
@@ -184,7 +187,6 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   const char* refused = o.checkpoint_every > 0     ? "--checkpoint-every K FILE (here: --checkpoint-every K, "
                                                      "the checkpoints are beside the pieces)"
                         : !o.resume.empty()        ? "--resume=FILE (--resume takes no file here)"
-                        : o.min_angle != 0         ? "--min-angle"
                         : o.keep_segments          ? "--keep-segments"
                         : threads                  ? "--threads (one thread per rank: start more ranks)"
                         : o.kernel != "epick"      ? "--kernel other than epick"
@@ -195,6 +197,9 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   if(o.stream && o.smooth > 0)
     throw afmesh_2::Usage_error("--stream cannot be combined with --smooth (as with afmesh_2: the triangles are "
                                 "written as they are finished)");
+  if(o.stream && o.min_angle != 0)
+    throw afmesh_2::Usage_error("--stream cannot be combined with --min-angle (as with afmesh_2: the refinement "
+                                "needs the triangles in memory)");
   if(o.stream && !o.histogram.empty())
     throw afmesh_2::Usage_error("--stream cannot be combined with --histogram (no quality figures, as afmesh_2 "
                                 "--stream)");
@@ -504,6 +509,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   double t_interfaces = 0, t_writing = 0, t_quality = 0;
   const bool want_quality = !stream && (m.opt.stats || m.opt.report || !m.opt.histogram.empty());
   AFM::Mesh_quality quality;
+  Min_angle_figures min_angle;
   if(stream) {
     const auto t_merge = std::chrono::steady_clock::now();
     Interface_work<K, Band<K, std::size_t> > w;
@@ -525,10 +531,48 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     const auto t_merge = std::chrono::steady_clock::now();
     Interface_work<K> w;
     merge_interfaces<K>(in, d, rank, meshed, w);
-    Rank_mesh mesh = rank_mesh<K>(meshed, w, rank, has_part);
-    mesh.tags = tag_share<K>(*tags, mesh.points, mesh.triangles);
-    check_segments_found<K>(*tags, mesh.tags.segments.size());
     t_interfaces = seconds_since(t_merge);
+    Rank_mesh mesh;
+    std::uint64_t registered_splits = 0, counted_splits = 0;
+    if(m.opt.min_angle > 0) {
+      // --min-angle: each share refined in rounds with its neighbours
+      // (min_angle.h); one part: the input's triangulation on rank 0. When
+      // no share has a triangle below the bound (smoothed meshes of smooth
+      // fields), the shares are left as they are
+      const auto t_angle = std::chrono::steady_clock::now();
+      const bool whole = d.parts == 1 && has_part;
+      CDT<K> share_cdt;
+      std::vector<unsigned char> input_constraints;
+      Rank_mesh share;
+      if(d.parts > 1) share = rank_mesh<K>(meshed, w, rank, has_part, &input_constraints);
+      const AFM::Minimum_angle_statistics unrefined = share_angles(share, m.opt.min_angle);
+      if(d.parts > 1 && !any_rank(unrefined.below_before > 0)) {
+        share = Rank_mesh();
+        mesh = rank_mesh<K>(meshed, w, rank, has_part);
+        min_angle = min_angle_figures(unrefined, 0, 0, 0, seconds_since(t_angle));
+      } else {
+        const auto once = share_triangulation<K>(share, input_constraints, share_cdt);
+        share = Rank_mesh();
+        Share_refinement<K> refinement(whole ? meshed : share_cdt, *tags, rank, w.has_lower ? rank - 1 : -1,
+                                       w.has_upper ? rank + 1 : -1);
+        refinement.find_shared_edges(once);
+        refinement.refine(m.opt.min_angle, most_refinement_rounds);
+        mesh = d.parts == 1 ? rank_mesh<K>(meshed, w, rank, has_part)
+                            : refined_rank_mesh<K>(share_cdt, refinement, rank);
+        registered_splits = refinement.registered_segment_splits();
+        counted_splits = refinement.counted_segment_splits();
+        min_angle = min_angle_figures(refinement.statistics(), refinement.rounds(), refinement.upper_points(),
+                                      refinement.upper_delaunay_splits(), seconds_since(t_angle));
+      }
+      if(rank == 0 && !min_angle.total.completed)
+        std::cerr << "afmesh_2_mpi: warning: " << m.opt.input << ": --min-angle " << m.opt.min_angle
+                  << ": the refinement stopped at its limit with " << min_angle.total.below_after
+                  << " triangles below the bound (the mesh is valid)\n";
+    } else {
+      mesh = rank_mesh<K>(meshed, w, rank, has_part);
+    }
+    mesh.tags = tag_share<K>(*tags, mesh.points, mesh.triangles);
+    check_segments_found<K>(*tags, mesh.tags.segments.size(), registered_splits, counted_splits);
     if(want_quality) {
       const auto t_q = std::chrono::steady_clock::now();
       quality = mesh_quality_over_ranks<typename K::Point_2>(mesh, in.sizing, rank, ranks);
@@ -553,7 +597,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   const std::vector<Rank_figures> all = gather_to_root(mine, ranks);
   if(rank != 0) return 0;
   const Run_summary<K> summary{m.opt, d, fewer_parts_reason, all, want_quality ? &quality : nullptr,
-                               t_decomposition, t_quality, seconds_since(t_start)};
+                               t_decomposition, t_quality, seconds_since(t_start),
+                               m.opt.min_angle > 0 ? &min_angle : nullptr};
   if(m.opt.report) afmesh_2::print_report_text(m.opt, report_text(summary, afmesh_2::boundary_summary(m.opt, in)));
   // input names that are not UTF-8 with replacement characters, as afmesh_2
   if(m.opt.stats) afmesh_2::print_statistics(statistics_json(summary));
@@ -597,7 +642,9 @@ int main(int argc, char* argv[])
                    "while it is meshed (OUT_<rank>.vtu.checkpoint); --resume goes on from there.\n"
                    "--stop-after-checkpoint stops each rank after its first checkpoint.\n"
                    "--smooth N smooths each part before the interfaces are merged, its cuts held (not\n"
-                   "with --stream); --time-limit and --max-steps limit each rank's mesher.\n"
+                   "with --stream); --min-angle A refines each rank's share after the merge, the\n"
+                   "ranks exchanging the points on their shared edges (not with --stream);\n"
+                   "--time-limit and --max-steps limit each rank's mesher.\n"
                    "--stats, --report and --histogram give the quality of the whole mesh as afmesh_2\n"
                    "does (not with --stream), and each rank's figures.\n"
                    "The input and size options are afmesh_2's (afmesh_2 --help).\n\n"

@@ -56,7 +56,11 @@ enum Tag : int {
   MERGED_REGIONS,
   MERGED_SEGMENT_MARKERS,
   QUALITY_RATIOS,
-  QUALITY_EDGES
+  QUALITY_EDGES,
+  MIN_ANGLE_EDGES,
+  MIN_ANGLE_SPLITS,
+  MIN_ANGLE_OPPOSITE,
+  MIN_ANGLE_IDS
 };
 
 // Values are sent as bytes in chunks of at most 1 GiB.

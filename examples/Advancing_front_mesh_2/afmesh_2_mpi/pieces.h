@@ -95,9 +95,31 @@ std::vector<typename CDT<K>::Vertex_handle> soup_vertices(const Band<K>& band)
   return v;
 }
 
-// This rank's share, with every vertex's number.
+// A vertex's number not known yet.
+constexpr std::uint64_t no_number = ~std::uint64_t(0);
+
+// Numbers the owned vertices of `m` (`m.owned` set) across the ranks: an
+// exclusive scan of their counts, in the order of the share's points; the
+// other vertices get no_number (the rank that owns them sends theirs).
+inline void number_owned(Rank_mesh& m, int rank)
+{
+  m.owned_count = 0;
+  for(char o : m.owned) m.owned_count += o != 0;
+  m.first_id = exclusive_scan(m.owned_count, rank);
+  m.global_id.assign(m.points.size(), no_number);
+  std::uint64_t next = m.first_id;
+  for(std::size_t i = 0; i < m.points.size(); ++i)
+    if(m.owned[i]) m.global_id[i] = next++;
+}
+
+// This rank's share, with every vertex's number; or, when
+// `input_constraints` is given, its triangles alone, with the input
+// constraints among their edges (bit k of a triangle: the edge opposite its
+// vertex k, as Triangle_soup_2 has them), for the refinement of --min-angle
+// (min_angle.h), which numbers the vertices afterwards.
 template <class K>
-Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank, bool has_part)
+Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank, bool has_part,
+                    std::vector<unsigned char>* input_constraints = nullptr)
 {
   typedef typename CDT<K>::Face_handle Face_handle;
   Rank_mesh m;
@@ -110,8 +132,12 @@ Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank
   if(has_part && part_cdt.dimension() == 2) {
     part.reserve(part_cdt.number_of_vertices());
     for(auto f = part_cdt.finite_faces_begin(); f != part_cdt.finite_faces_end(); ++f)
-      if(f->is_in_domain() && !moved.contains(&*f))
+      if(f->is_in_domain() && !moved.contains(&*f)) {
         m.triangles.push_back({{part(f->vertex(0)), part(f->vertex(1)), part(f->vertex(2))}});
+        if(input_constraints != nullptr)
+          input_constraints->push_back(
+            (unsigned char)((f->is_constrained(0) ? 1 : 0) | (f->is_constrained(1) ? 2 : 0) | (f->is_constrained(2) ? 4 : 0)));
+      }
   }
   if(w.has_upper) {
     // the merged band meets the part's triangles at the band's edge, where
@@ -124,9 +150,23 @@ Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank
       if(it != at_band_edge.end()) merged.alias(v, it->second);
     }
     for(auto f = w.merged.finite_faces_begin(); f != w.merged.finite_faces_end(); ++f)
-      if(f->is_in_domain())
+      if(f->is_in_domain()) {
         m.triangles.push_back({{merged(f->vertex(0)), merged(f->vertex(1)), merged(f->vertex(2))}});
+        // the merged band holds its outer edges as constraints too: an input
+        // constraint there has the band on both sides, or is one at the
+        // band's edge that the part's triangle beside it says is one (an
+        // edge on the domain's boundary is held either way)
+        if(input_constraints != nullptr) {
+          unsigned char bits = 0;
+          for(int k = 0; k < 3; ++k) {
+            const auto g = f->neighbor(k);
+            if(f->is_constrained(k) && !w.merged.is_infinite(g) && g->is_in_domain()) bits |= (unsigned char)(1 << k);
+          }
+          input_constraints->push_back(bits);
+        }
+      }
   }
+  if(input_constraints != nullptr) return m;
   m.owned.assign(m.points.size(), 1);
   std::vector<typename CDT<K>::Vertex_handle> sent;
   if(w.has_lower) {
@@ -134,13 +174,7 @@ Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank
     for(const auto& v : sent)
       if(const std::uint64_t* i = part.find(v)) m.owned[*i] = 0;
   }
-  for(char o : m.owned) m.owned_count += o != 0;
-  m.first_id = exclusive_scan(m.owned_count, rank);
-  const std::uint64_t unknown = ~std::uint64_t(0);
-  m.global_id.assign(m.points.size(), unknown);
-  std::uint64_t next = m.first_id;
-  for(std::size_t i = 0; i < m.points.size(); ++i)
-    if(m.owned[i]) m.global_id[i] = next++;
+  number_owned(m, rank);
   // the numbers of the band points: down from the rank that owns them
   if(w.has_upper) {
     std::vector<std::uint64_t> ids;
@@ -158,7 +192,7 @@ Rank_mesh rank_mesh(const CDT<K>& part_cdt, const Interface_work<K>& w, int rank
       if(const std::uint64_t* i = part.find(sent[k])) m.global_id[*i] = ids[k];
   }
   for(std::uint64_t id : m.global_id)
-    if(id == unknown) throw std::logic_error("a vertex of the rank's share has no number");
+    if(id == no_number) throw std::logic_error("a vertex of the rank's share has no number");
   return m;
 }
 

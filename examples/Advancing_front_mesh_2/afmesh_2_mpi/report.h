@@ -5,6 +5,7 @@
 #define AFMESH_2_MPI_REPORT_H
 
 #include "../afmesh_2/report.h"
+#include "min_angle.h"
 #include "parts.h"
 
 #include <CGAL/Advancing_front_mesh_2/Mesh_quality.h>
@@ -63,6 +64,7 @@ struct Run_summary
   const std::vector<Rank_figures>& ranks;
   const AFM::Mesh_quality* quality;
   double decomposition_time, quality_time, total_time;
+  const Min_angle_figures* min_angle; // null without --min-angle
 
   std::uint64_t triangles() const
   {
@@ -131,6 +133,21 @@ nlohmann::ordered_json statistics_json(const Run_summary<K>& s)
     j["smoothing"] = {{"method", s.opt.smoother}, {"passes", passes}, {"moves", moves}, {"rejected_moves", rejected},
                       {"flips", flips}};
   }
+  if(s.min_angle != nullptr) {
+    // afmesh_2's keys, and the rounds of the ranks
+    const AFM::Minimum_angle_statistics& a = s.min_angle->total;
+    j["min_angle"] = {{"bound", a.angle},
+                      {"below_before", a.below_before},
+                      {"points_inserted", a.points_inserted},
+                      {"triangles_changed", a.triangles_changed},
+                      {"below_after", a.below_after},
+                      {"completed", a.completed},
+                      {"smallest_angle", a.smallest_angle},
+                      {"rounds", s.min_angle->rounds},
+                      {"points_on_interfaces", s.min_angle->shared_points},
+                      {"interface_edges_made_delaunay", s.min_angle->delaunay_splits},
+                      {"time", s.min_angle->time}};
+  }
   if(s.quality != nullptr) {
     j["quality"] = afmesh_2::quality_json(*s.quality);
     j["quality_time"] = s.quality_time;
@@ -176,6 +193,13 @@ std::string report_text(const Run_summary<K>& s, const std::string& boundary)
   if(s.opt.smooth > 0)
     os << "  each part smoothed before the interfaces were merged: " << s.opt.smooth << " " << s.opt.smoother
        << " passes, " << moves << " moves, " << smoothing_flips << " flips\n";
+  if(s.min_angle != nullptr) {
+    const AFM::Minimum_angle_statistics& a = s.min_angle->total;
+    os << "  the minimum angle raised to " << a.angle << " degrees in " << s.min_angle->time << " s ("
+       << a.below_before << " triangles below it, " << a.points_inserted << " points inserted, "
+       << a.triangles_changed << " triangles changed, " << a.below_after << " left below; " << s.min_angle->rounds
+       << " rounds, " << s.min_angle->shared_points << " points on the interfaces)\n";
+  }
   if(s.quality != nullptr) afmesh_2::print_quality_lines(os, "", *s.quality);
   else os << "  no quality figures with --stream (as afmesh_2 --stream)\n";
   os << "  " << boundary << "\n";
