@@ -531,8 +531,8 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     const auto t_merge = std::chrono::steady_clock::now();
     Interface_work<K> w;
     merge_interfaces<K>(in, d, rank, meshed, w);
-    t_interfaces = seconds_since(t_merge);
     Rank_mesh mesh;
+    double t_refining = 0; // this rank's --min-angle time, not the interfaces'
     std::uint64_t registered_splits = 0, counted_splits = 0;
     if(m.opt.min_angle > 0) {
       // --min-angle: each share refined in rounds with its neighbours
@@ -564,6 +564,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
         min_angle = min_angle_figures(refinement.statistics(), refinement.rounds(), refinement.upper_points(),
                                       refinement.upper_delaunay_splits(), seconds_since(t_angle));
       }
+      t_refining = seconds_since(t_angle);
       if(rank == 0 && !min_angle.total.completed)
         std::cerr << "afmesh_2_mpi: warning: " << m.opt.input << ": --min-angle " << m.opt.min_angle
                   << ": the refinement stopped at its limit with " << min_angle.total.below_after
@@ -573,6 +574,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     }
     mesh.tags = tag_share<K>(*tags, mesh.points, mesh.triangles);
     check_segments_found<K>(*tags, mesh.tags.segments.size(), registered_splits, counted_splits);
+    t_interfaces = seconds_since(t_merge) - t_refining;
     if(want_quality) {
       const auto t_q = std::chrono::steady_clock::now();
       quality = mesh_quality_over_ranks<typename K::Point_2>(mesh, in.sizing, rank, ranks);
