@@ -643,24 +643,27 @@ check("--stream cannot be combined with --smooth" in r.stderr, "--smooth with --
 
 # --min-angle: each rank refines its share after the merge, in rounds with
 # its neighbours (the points on shared edges exchanged, the edges made
-# Delaunay across); the airfoil's fronts meet at 459 triangles below 30
-# degrees. On 1 rank, afmesh_2's mesh; on 2 and 4 ranks a valid constrained
-# Delaunay mesh with no angle below 30 degrees, the quality figures those of
-# the merged mesh, the counts within 1% and the share above 0.9 within half
-# a point of afmesh_2 --threads N --min-angle 30; the pieces are the merged
-# mesh, numbered without gaps
+# Delaunay across); the airfoil's fronts meet at about 580 triangles below
+# 30 degrees at size 0.03. On 1 rank, afmesh_2's mesh; on 2 and 4 ranks a
+# valid constrained Delaunay mesh with no angle below 30 degrees, the quality
+# figures those of the merged mesh, the counts within 1% and the share above
+# 0.9 within half a point of afmesh_2 --threads N --min-angle 30; the pieces
+# are the merged mesh, numbered without gaps. On 2 ranks the later rounds
+# must split constraints (split_encroached_constraints()): without that, 11
+# triangles were left below the bound where the cut meets the airfoil and
+# the far field
 interface_points = 0
 for n in (1, 2, 4):
     label = "airfoil, %d ranks, --min-angle 30" % n
-    threads = json.loads(run(serial, "airfoil.poly", "--size", "0.02", "--min-angle", "30", "--threads", str(n), "-o",
+    threads = json.loads(run(serial, "airfoil.poly", "--size", "0.03", "--min-angle", "30", "--threads", str(n), "-o",
                              "angle_threads.off", "--stats").stdout)
-    stats = json.loads(mpi(n, "airfoil.poly", "--size", "0.02", "--min-angle", "30", "--merge", "-o", "angle.off",
+    stats = json.loads(mpi(n, "airfoil.poly", "--size", "0.03", "--min-angle", "30", "--merge", "-o", "angle.off",
                            "--stats").stdout)
     valid("airfoil.poly", "angle.off", label)
     a_points, a_triangles = read_off("angle.off")
     t_points, t_triangles = read_off("angle_threads.off")
     a = stats["min_angle"]
-    computed = quality(a_points, a_triangles, 0.02)
+    computed = quality(a_points, a_triangles, 0.03)
     check(a["below_before"] > 100 and a["points_inserted"] > 0 and a["below_after"] == 0 and a["completed"] and
           computed["min_angle_degrees"] >= 30 * (1 - 1e-9) and a["rounds"] >= 1,
           "%s: %s, smallest angle %r" % (label, a, computed["min_angle_degrees"]))
@@ -678,7 +681,7 @@ for n in (1, 2, 4):
         mine, theirs = share_above_0_9(a_points, a_triangles), share_above_0_9(t_points, t_triangles)
         check(abs(mine - theirs) <= 0.5, "%s: share above 0.9 %.2f%%, on threads %.2f%%" % (label, mine, theirs))
     if n == 4:
-        mpi(n, "airfoil.poly", "--size", "0.02", "--min-angle", "30", "-o", "pieces/angle.pvtu")
+        mpi(n, "airfoil.poly", "--size", "0.03", "--min-angle", "30", "-o", "pieces/angle.pvtu")
         pieces = read_pieces("pieces/angle.pvtu", n)
         check(pieces is not None and triangle_set(*pieces) == triangle_set(a_points, a_triangles),
               "%s: the pieces put together are not the merged mesh" % label)

@@ -9,7 +9,9 @@
 // constraints. Mesh_2 then refines the share as it refines a domain: where a
 // circumcentre would fall beyond a shared edge or encroach on it, the edge
 // is split instead. The ranks then work in rounds:
-//  1. each rank refines its share;
+//  1. each rank refines its share (in the later rounds without splitting
+//     constraints, then splitting those that its triangles below the bound
+//     encroach on, split_encroached_constraints());
 //  2. each rank tells its neighbours the points it put on their shared
 //     edges, and puts theirs on its own (split_points);
 //  3. each rank tells its neighbours the vertex its triangle has opposite
@@ -21,7 +23,8 @@
 // After the last round every edge inside a share is locally Delaunay (the
 // share's triangulation is constrained Delaunay), every shared edge is too
 // (step 3 found none to split) and no triangle is below the bound but
-// where Mesh_2 leaves them (at small input angles): the whole mesh is
+// where Mesh_2 leaves them (at small input angles) and at corners of the
+// shared edges sharper than the bound (split_point()): the whole mesh is
 // constrained Delaunay, the shared edges released, as afmesh_2's is.
 // A point on a shared edge is inserted by both ranks with the same
 // coordinates, so the shares still meet edge to edge. With one part, the
@@ -41,8 +44,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -156,14 +162,16 @@ public:
       // and there its midpoint can fall outside both triangles of the edge
       // (CGAL issue 781: an assertion in Refine_edges, a crash without
       // assertions; the MESH2D lake at size 0.05 does it): the later rounds
-      // split no constraint, as --keep-segments refines (their triangles
-      // below the bound are those the neighbours' points made, few).
+      // split no constraint, as --keep-segments refines; the constraints
+      // their triangles' circumcentres encroach on are split here instead
+      // (split_encroached_constraints()).
       if(changed_) {
-        const AFM::Minimum_angle_statistics here = AFM::refine_to_minimum_angle_2(cdt_, degrees, rounds_ == 0);
+        AFM::Minimum_angle_statistics here = AFM::refine_to_minimum_angle_2(cdt_, degrees, rounds_ == 0);
         if(rounds_ == 0) {
           st.triangles_before = here.triangles_before;
           st.below_before = here.below_before;
-        }
+        } else
+          split_encroached_constraints(degrees, here);
         st.completed = st.completed && here.completed;
         last = here;
         changed_ = false;
@@ -412,29 +420,7 @@ private:
       throw std::logic_error("a point for an edge this rank does not share");
     const Shared_edge e = it->second;
     shared_.erase(it);
-    // the side of a-b the share is on: the marks of the faces the
-    // insertion makes are set from it
-    if(!f->is_in_domain()) {
-      const Face_handle g = f->neighbor(i);
-      i = g->index(f);
-      f = g;
-    }
-    if(!f->is_in_domain()) throw std::logic_error("a shared edge with no triangle of the share");
-    const Point c = f->vertex(i)->point();
-    const CGAL::Orientation share_side = CGAL::orientation(a->point(), b->point(), c);
-    const Vertex_handle v = cdt_.insert(p, Cdt::EDGE, f, i);
-    auto fc = cdt_.incident_faces(v), done = fc;
-    do {
-      if(cdt_.is_infinite(fc)) {
-        fc->set_in_domain(false);
-        continue;
-      }
-      const Point centroid((CGAL::to_double(fc->vertex(0)->point().x()) + CGAL::to_double(fc->vertex(1)->point().x()) +
-                            CGAL::to_double(fc->vertex(2)->point().x())) / 3,
-                           (CGAL::to_double(fc->vertex(0)->point().y()) + CGAL::to_double(fc->vertex(1)->point().y()) +
-                            CGAL::to_double(fc->vertex(2)->point().y())) / 3);
-      fc->set_in_domain(CGAL::orientation(a->point(), b->point(), centroid) == share_side);
-    } while(++fc != done);
+    const Vertex_handle v = insert_on_constraint(f, i, p);
     known_.insert(&*v);
     inserted_.push_back(v);
     changed_ = true;
@@ -442,6 +428,186 @@ private:
     add_shared(v, b, e);
     if(e.input) split_segment(a, b, v, e.neighbour == lower_);
     return v;
+  }
+
+  // Inserts p on the constrained edge (f, i) (a shared edge or a
+  // segment), which it splits; the faces the insertion makes on each side
+  // of the edge are in the domain as the face there was (a segment inside
+  // the domain has it on both sides, a shared edge or a boundary segment on
+  // one). The sides are told by the faces' order around the new vertex,
+  // not by where their points are: a face beside the edge can be a sliver
+  // whose centre is on the wrong side of the line by rounding (the
+  // airfoil's far field on 5 ranks had one, outside the share, and it came
+  // out in the domain as a flat triangle).
+  Vertex_handle insert_on_constraint(Face_handle f, int i, const Point& p)
+  {
+    // f's side of a -> b is its left (a face's vertices turn counterclockwise)
+    const Vertex_handle a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));
+    const Face_handle g = f->neighbor(i);
+    const bool left_in = !cdt_.is_infinite(f) && f->is_in_domain(), right_in = !cdt_.is_infinite(g) && g->is_in_domain();
+    if(!left_in && !right_in) throw std::logic_error("a constraint with no triangle of the share");
+    const Vertex_handle v = cdt_.insert(p, Cdt::EDGE, f, i);
+    // counterclockwise around v, the faces from v-b to v-a are on the
+    // left of a -> b, those from v-a to v-b on its right
+    auto fc = cdt_.incident_faces(v), done = fc;
+    while(fc->vertex(Cdt::ccw(fc->index(v))) != b)
+      if(++fc == done) throw std::logic_error("a point put on a constraint does not split it");
+    done = fc;
+    bool left = true;
+    do {
+      fc->set_in_domain(!cdt_.is_infinite(fc) && (left ? left_in : right_in));
+      const Vertex_handle last = fc->vertex(Cdt::cw(fc->index(v)));
+      if(last == a) left = false;
+      if(last == b) left = true;
+    } while(++fc != done);
+    return v;
+  }
+
+  // The constrained edges around the faces of the share in conflict with c
+  // (c in their circumcircle) that can be reached from f, in conflict with
+  // it, without crossing a constraint: the edges whose encroachment by c
+  // Mesh_2 tests (wherever c itself lies).
+  std::vector<typename Cdt::Edge> constrained_edges_around_conflicts(Face_handle f, const Point& c) const
+  {
+    std::vector<typename Cdt::Edge> edges;
+    std::vector<Face_handle> stack{f};
+    std::unordered_set<const void*> seen{&*f};
+    while(!stack.empty()) {
+      const Face_handle g = stack.back();
+      stack.pop_back();
+      for(int i = 0; i < 3; ++i) {
+        if(g->is_constrained(i)) {
+          edges.emplace_back(g, i);
+          continue;
+        }
+        const Face_handle n = g->neighbor(i);
+        if(cdt_.is_infinite(n) || !n->is_in_domain() || seen.count(&*n) > 0 || !cdt_.test_conflict(c, n)) continue;
+        seen.insert(&*n);
+        stack.push_back(n);
+      }
+    }
+    return edges;
+  }
+
+  // The smallest angle, in radians, the constrained edge v-w makes with
+  // another constraint at v (pi if there is none).
+  double angle_at(Vertex_handle v, Vertex_handle w) const
+  {
+    const double vx = CGAL::to_double(v->point().x()), vy = CGAL::to_double(v->point().y());
+    const double wx = CGAL::to_double(w->point().x()) - vx, wy = CGAL::to_double(w->point().y()) - vy;
+    double smallest = CGAL_PI;
+    for(Vertex_handle u : constrained_neighbours(v)) {
+      if(u == w) continue;
+      const double ux = CGAL::to_double(u->point().x()) - vx, uy = CGAL::to_double(u->point().y()) - vy;
+      smallest = (std::min)(smallest, std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy));
+    }
+    return smallest;
+  }
+
+  // Where split_encroached_constraints() splits the constrained edge a-b,
+  // or nothing. At its midpoint, as Mesh_2 splits, but where a-b makes an
+  // angle below 60 degrees with another constraint at one end (the apex):
+  // there midpoints could split the two edges in turn without end
+  // (Ruppert's small input angles), and the split is on a concentric shell
+  // around the apex instead (Shewchuk's concentric circular shells, which
+  // Mesh_2's clusters also use): at a power of two from it, in the middle
+  // third of the edge, so that both edges at the apex are split at the same
+  // distances and their short pieces make an isosceles triangle there. The
+  // cuts make such apexes where they meet the boundary obliquely (51
+  // degrees on the airfoil). An apex below the bound is left as it is: no
+  // split makes its triangle good.
+  //
+  // Both ranks of a shared edge may split it in the same round, each
+  // deciding on its own side's constraints; each then inserts the other's
+  // point too (step 2). So that two such points are never a rounding error
+  // apart, both compute from the edge's key order, and a shell that falls
+  // at the midpoint (as it does on the pieces of an edge split on shells
+  // before) is the midpoint, computed as the midpoint.
+  std::optional<Point> split_point(Vertex_handle a, Vertex_handle b, double degrees) const
+  {
+    if(undirected_key(a->point(), b->point()) != edge_key(a->point(), b->point())) std::swap(a, b);
+    const double at_a = angle_at(a, b), at_b = angle_at(b, a), bound = degrees * CGAL_PI / 180;
+    if((std::min)(at_a, at_b) < bound * (1 - 1e-9)) return std::nullopt;
+    const double ax = CGAL::to_double(a->point().x()), ay = CGAL::to_double(a->point().y());
+    const double bx = CGAL::to_double(b->point().x()), by = CGAL::to_double(b->point().y());
+    const Point midpoint((ax + bx) / 2, (ay + by) / 2);
+    const bool small_a = at_a < CGAL_PI / 3, small_b = at_b < CGAL_PI / 3;
+    if(small_a == small_b) return midpoint;
+    const double length = std::hypot(bx - ax, by - ay);
+    // the power of two in [length / 3, 2 length / 3] (one is, the interval
+    // spans a factor of 2)
+    const double shell = std::exp2(std::ceil(std::log2(length / 3)));
+    if(std::abs(shell - length / 2) <= 1e-6 * length) return midpoint;
+    const double t = (small_a ? shell : length - shell) / length;
+    return Point(ax + t * (bx - ax), ay + t * (by - ay));
+  }
+
+  // The later rounds' refinement splits no constraint, so a triangle below
+  // the bound whose circumcentre encroaches on a constraint (lies in its
+  // diametral circle, or beyond it) stays: a neighbour's point on a shared
+  // edge makes such triangles next to it, and Mesh_2's circumcentres near
+  // them more (the airfoil at size 0.03 on 2 ranks had 11 left, at the
+  // airfoil's surface and the far field where the cut meets them). Such a
+  // constraint, a shared edge or a segment, is split here, as Mesh_2
+  // splits encroached edges, and the share refined again, until
+  // no triangle below the bound encroaches on one (split_point() says
+  // where, and leaves apexes below the bound); the points on shared edges
+  // go to the neighbour in step 2, and the tags learn those on segments
+  // (new_chains() finds both). `here` becomes the figures of the share as
+  // it is, the points inserted added up.
+  void split_encroached_constraints(double degrees, AFM::Minimum_angle_statistics& here)
+  {
+    typename K::Construct_circumcenter_2 circumcenter;
+    for(std::size_t pass = 0; here.below_after > 0; ++pass) {
+      // the edges to split, each once (by their vertices: an insertion
+      // replaces the faces around it)
+      std::map<Edge_key, std::pair<Vertex_handle, Vertex_handle> > encroached;
+      for(auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f) {
+        if(!f->is_in_domain()) continue;
+        const Point &p0 = f->vertex(0)->point(), &p1 = f->vertex(1)->point(), &p2 = f->vertex(2)->point();
+        if(!(AFM::internal::smallest_angle_degrees(p0, p1, p2) < degrees * (1 - 1e-9))) continue;
+        const Point c = circumcenter(p0, p1, p2);
+        for(const auto& e : constrained_edges_around_conflicts(Face_handle(f), c)) {
+          const Vertex_handle va = e.first->vertex(Cdt::ccw(e.second)), vb = e.first->vertex(Cdt::cw(e.second));
+          const Point &a = va->point(), &b = vb->point();
+          const Edge_key key = undirected_key(a, b);
+          if(encroached.count(key) > 0) continue;
+          // beyond the edge (seen from the conflict zone) or in its
+          // diametral circle
+          const bool beyond = CGAL::orientation(a, b, c) != CGAL::orientation(a, b, e.first->vertex(e.second)->point());
+          if(beyond || CGAL::side_of_bounded_circle(a, b, c) != CGAL::ON_UNBOUNDED_SIDE)
+            encroached.emplace(key, std::make_pair(va, vb));
+        }
+      }
+      if(encroached.empty()) return;
+      // a safeguard, as the refinement's insertion limit: each pass at
+      // least halves the edges it splits, so this is reached only beyond
+      // what was measured (at most 3 passes)
+      if(pass == 32) {
+        here.completed = false;
+        return;
+      }
+      std::size_t splits = 0;
+      for(const auto& [key, edge] : encroached) {
+        const Vertex_handle a = edge.first, b = edge.second;
+        Face_handle f;
+        int i = 0;
+        if(!cdt_.is_edge(a, b, f, i) || !f->is_constrained(i))
+          throw std::logic_error("an encroached constraint is not an edge of the share");
+        const std::optional<Point> p = split_point(a, b, degrees);
+        if(!p) continue;
+        insert_on_constraint(f, i, *p);
+        ++splits;
+      }
+      if(splits == 0) return;
+      here.points_inserted += splits;
+      const AFM::Minimum_angle_statistics again = AFM::refine_to_minimum_angle_2(cdt_, degrees, false);
+      here.points_inserted += again.points_inserted;
+      here.triangles_after = again.triangles_after;
+      here.below_after = again.below_after;
+      here.smallest_angle = again.smallest_angle;
+      here.completed = here.completed && again.completed;
+    }
   }
 
   // the vertex of the share's triangle at the shared edge a-b, opposite it
