@@ -466,7 +466,10 @@ private:
   // The constrained edges around the faces of the share in conflict with c
   // (c in their circumcircle) that can be reached from f, in conflict with
   // it, without crossing a constraint: the edges whose encroachment by c
-  // Mesh_2 tests (wherever c itself lies).
+  // Mesh_2 tests (wherever c itself lies). Not the CDT's
+  // get_conflicts_and_boundary(), which starts from the face that contains
+  // c: beyond a shared edge that face is outside the share, and its zone
+  // holds none of the share's edges.
   std::vector<typename Cdt::Edge> constrained_edges_around_conflicts(Face_handle f, const Point& c) const
   {
     std::vector<typename Cdt::Edge> edges;
