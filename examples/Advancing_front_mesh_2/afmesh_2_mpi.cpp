@@ -1,7 +1,8 @@
 // afmesh_2_mpi: afmesh_2 on MPI ranks, for meshes larger than one machine.
 //
 //   mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]
-//          -o OUT.pvtu | --merge -o OUT.off|OUT.vtu | --no-output
+//          -o OUT.pvtu | --merge -o OUT.off|.vtu|.node|.ele|.msh|.svg|.poly
+//          | --no-output
 //          [--stats] [--report] [--histogram OUT.svg]
 //
 // Every rank reads INPUT and makes the size field, the boundary
@@ -15,7 +16,8 @@
 // OUT_<rank>.vtu, with the global vertex numbers (point data GlobalNodeId)
 // and the rank of each triangle (cell data partition), and the markers and
 // regions as afmesh_2's .vtu has them (afmesh_2_mpi/tags.h); --merge writes
-// one file instead (rank 0 writes it as the ranks send their shares).
+// one file instead, in any of afmesh_2's formats (rank 0 writes it as the
+// ranks send their shares; afmesh_2_mpi/merged_formats.h).
 //
 // --stream meshes each rank's part in streaming mode, for parts larger than
 // memory (afmesh_2_mpi/streamed.h): the triangles go to scratch files
@@ -35,9 +37,12 @@
 // rank's figures (afmesh_2_mpi/report.h); with --stream, as afmesh_2
 // --stream, no quality figures.
 //
-// The input and size options are afmesh_2's (afmesh_2 --help). Not yet on
-// MPI: --keep-segments, --threads, --kernel other than epick, and the
-// formats other than .pvtu, .off and .vtu: they are refused (exit 2).
+// The input and size options are afmesh_2's (afmesh_2 --help). Not on
+// MPI: --keep-segments (the cuts split segments, as afmesh_2 --threads
+// refuses it), --threads (one thread per rank: start more ranks) and
+// --kernel other than epick; they are refused (exit 2). .svg and .poly
+// need the whole mesh on rank 0, and are refused with --stream as afmesh_2
+// refuses them.
 // --smooth smooths each part before its interfaces are merged, its cuts
 // held; --min-angle refines each rank's share after the merge, in rounds
 // with its neighbours (afmesh_2_mpi/min_angle.h); --time-limit and
@@ -46,7 +51,7 @@
 // Exit codes as afmesh_2's: 0 success; 1 invalid input; 2 bad usage; 3 an
 // output that could not be written, or an internal error.
 #include "afmesh_2_mpi/channel.h"
-#include "afmesh_2_mpi/merged.h"
+#include "afmesh_2_mpi/merged_formats.h"
 #include "afmesh_2_mpi/min_angle.h"
 #include "afmesh_2_mpi/quality.h"
 #include "afmesh_2_mpi/report.h"
@@ -191,9 +196,9 @@ inline Mpi_options parse(const std::vector<std::string>& args)
                         : threads                  ? "--threads (one thread per rank: start more ranks)"
                         : o.kernel != "epick"      ? "--kernel other than epick"
                                                    : nullptr;
-  if(refused != nullptr) throw afmesh_2::Usage_error(std::string("afmesh_2_mpi does not support ") + refused + " yet");
+  if(refused != nullptr) throw afmesh_2::Usage_error(std::string("afmesh_2_mpi does not support ") + refused);
   if(m.outputs.empty() && !no_output)
-    throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.off (or .vtu), or --no-output");
+    throw afmesh_2::Usage_error("no output: give -o OUT.pvtu, --merge -o OUT.vtu (or any of afmesh_2's formats), or --no-output");
   if(o.stream && o.smooth > 0)
     throw afmesh_2::Usage_error("--stream cannot be combined with --smooth (as with afmesh_2: the triangles are "
                                 "written as they are finished)");
@@ -205,7 +210,7 @@ inline Mpi_options parse(const std::vector<std::string>& args)
                                 "--stream)");
   if(o.stream && m.outputs.empty())
     throw afmesh_2::Usage_error("--stream keeps its scratch files beside the output: give -o OUT.pvtu, or --merge "
-                                "-o OUT.vtu (or .off)");
+                                "-o OUT.vtu (or .off, .node, .ele, .msh)");
   if((m.stop_after_meshing || m.resume || m.checkpoint_every > 0) && !o.stream)
     throw afmesh_2::Usage_error(std::string(m.resume                ? "--resume"
                                             : m.stop_after_meshing ? "--stop-after-meshing"
@@ -214,10 +219,17 @@ inline Mpi_options parse(const std::vector<std::string>& args)
   if(m.stop_after_checkpoint && m.checkpoint_every == 0)
     throw afmesh_2::Usage_error("--stop-after-checkpoint needs --checkpoint-every");
   for(const std::string& out : m.outputs) {
-    if(m.merge && !ends_with(out, ".off") && !ends_with(out, ".vtu"))
-      throw afmesh_2::Usage_error("--merge writes .off or .vtu, not '" + out + "'");
     if(!m.merge && !ends_with(out, ".pvtu"))
-      throw afmesh_2::Usage_error("without --merge the output is a collection of pieces (.pvtu), not '" + out + "'");
+      throw afmesh_2::Usage_error("without --merge the output is a collection of pieces (.pvtu), not '" + out +
+                                  "' (--merge writes one file, in any of afmesh_2's formats)");
+  }
+  if(m.merge) {
+    // afmesh_2's formats, and what it refuses with --stream (they need the
+    // whole mesh)
+    afmesh_2::Options formats = o;
+    formats.outputs = m.outputs;
+    afmesh_2::check_output_formats(formats);
+    afmesh_2::check_streaming(formats);
   }
   return m;
 }
@@ -244,7 +256,14 @@ inline std::vector<std::string> files_of(const Mpi_options& m, const std::string
   std::vector<std::string> files;
   if(!m.merge) files.push_back(piece_name(out, rank));
   else if(m.opt.stream && out == m.outputs.front()) files.push_back(scratch_stem(m, rank));
-  if(rank == 0) files.push_back(out);
+  if(rank != 0) return files;
+  files.push_back(out);
+  // -o OUT.node (or .ele) writes OUT.node, OUT.ele and OUT.edge
+  if(m.merge && (ends_with(out, ".node") || ends_with(out, ".ele"))) {
+    const std::string stem = out.substr(0, out.find_last_of('.'));
+    for(const char* e : {".node", ".ele", ".edge"})
+      if(stem + e != out) files.push_back(stem + e);
+  }
   return files;
 }
 
@@ -518,10 +537,11 @@ inline int run(const Mpi_options& m, int rank, int ranks)
     const Streamed_share mesh = streamed_share<K>(*stream, w, rank);
     t_interfaces = seconds_since(t_merge);
     const auto t_write = std::chrono::steady_clock::now();
-    for(const std::string& out : m.outputs) {
-      if(m.merge) write_merged(out, merged_share<K>(*stream, mesh), rank, ranks, !m.opt.vtu_ascii);
-      else write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
-    }
+    if(m.merge)
+      write_merged_outputs<K>(m.opt, m.outputs, [&] { return merged_share<K>(*stream, mesh); }, in.tags,
+                              tags->attributes(), rank, ranks);
+    else
+      for(const std::string& out : m.outputs) write_streamed_piece<K>(out, *stream, mesh, rank, ranks, !m.opt.vtu_ascii);
     t_writing = seconds_since(t_write);
     // every piece is written: the kept parts go
     if(all_ranks(true) && has_part) stream->discard();
@@ -581,10 +601,11 @@ inline int run(const Mpi_options& m, int rank, int ranks)
       t_quality = seconds_since(t_q);
     }
     const auto t_write = std::chrono::steady_clock::now();
-    for(const std::string& out : m.outputs) {
-      if(m.merge) write_merged(out, merged_share(mesh), rank, ranks, !m.opt.vtu_ascii);
-      else write_piece(out, mesh, rank, ranks, !m.opt.vtu_ascii);
-    }
+    if(m.merge)
+      write_merged_outputs<K>(m.opt, m.outputs, [&] { return merged_share(mesh); }, in.tags, tags->attributes(),
+                              rank, ranks);
+    else
+      for(const std::string& out : m.outputs) write_piece(out, mesh, rank, ranks, !m.opt.vtu_ascii);
     t_writing = seconds_since(t_write);
     share = share_figures(w, mesh.triangles.size(), mesh.owned_count);
   }
@@ -629,22 +650,23 @@ int main(int argc, char* argv[])
   try {
     m = parse(std::vector<std::string>(argv + 1, argv + argc));
     if(m.help && mpi.rank == 0)
-      std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size options]\n"
-                   "                    (-o OUT.pvtu | --merge -o OUT.off|OUT.vtu) [--stream [--checkpoint-every K]\n"
-                   "                    [--resume]] | --no-output\n"
-                   "                    [--stats] [--report] [--histogram OUT.svg]\n\n"
+      std::cout << "Usage: mpirun -np N afmesh_2_mpi INPUT [--size H] [--sources FILE] [size opts]\n"
+                   "         (-o OUT.pvtu | --merge -o OUT.EXT...) [--stream [--checkpoint-every K]\n"
+                   "         [--resume]] | --no-output\n"
+                   "         [--stats] [--report] [--histogram OUT.svg]\n\n"
                    "Meshes the domain of INPUT as afmesh_2 does, one part per MPI rank. -o OUT.pvtu\n"
                    "writes one piece per rank (OUT_<rank>.vtu) and their collection; --merge writes\n"
-                   "one file. --stream meshes each part in streaming mode (parts larger than memory;\n"
-                   "scratch files beside the output, OUT_<rank>.vtu.*). A streamed rank keeps its\n"
-                   "part, once meshed, until the output is written: --stop-after-meshing stops there,\n"
-                   "and the same command with --resume (after a stop or a failure) meshes only the\n"
-                   "parts not kept.\n"
+                   "one file, EXT any of afmesh_2's formats (.off .vtu .node/.ele .msh .svg .poly;\n"
+                   "-o repeatable; not .svg and .poly with --stream). --stream meshes each part in\n"
+                   "streaming mode (parts larger than memory; scratch files beside the output,\n"
+                   "OUT_<rank>.vtu.*). A streamed rank keeps its part, once meshed, until the\n"
+                   "output is written: --stop-after-meshing stops there, and the same command with\n"
+                   "--resume (after a stop or a failure) meshes only the parts not kept.\n"
                    "--checkpoint-every K (with --stream) checkpoints each part every K triangles\n"
                    "while it is meshed (OUT_<rank>.vtu.checkpoint); --resume goes on from there.\n"
                    "--stop-after-checkpoint stops each rank after its first checkpoint.\n"
-                   "--smooth N smooths each part before the interfaces are merged, its cuts held (not\n"
-                   "with --stream); --min-angle A refines each rank's share after the merge, the\n"
+                   "--smooth N smooths each part before the interfaces are merged, its cuts held\n"
+                   "(not with --stream); --min-angle A refines each rank's share after the merge, the\n"
                    "ranks exchanging the points on their shared edges (not with --stream);\n"
                    "--time-limit and --max-steps limit each rank's mesher.\n"
                    "--stats, --report and --histogram give the quality of the whole mesh as afmesh_2\n"

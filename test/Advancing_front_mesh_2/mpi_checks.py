@@ -20,6 +20,7 @@ Usage: mpi_checks.py MPIEXEC AFMESH_2_MPI AFMESH_2 AFM_MAKE_INPUT AFM_CHECK_MESH
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -27,6 +28,7 @@ import meshio
 import numpy as np
 
 from cli_checks import check, finish, run
+from tagged_files import check_formats_agree, read_triangle, tagged_geometry
 
 mpiexec, tool, serial, make_input, checker, work = sys.argv[1:7]
 lake = sys.argv[7] if len(sys.argv) > 7 else ""
@@ -497,6 +499,130 @@ for rank in range(3):
     m = meshio.read("kept/t_%d.vtu" % rank)
     lines = m.cell_data_dict["partition"].get("line", [])
     check(all(int(k) == rank for k in lines), "a segment of piece %d is not in partition %d" % (rank, rank))
+# --merge in afmesh_2's other formats, several at once: the .node/.ele/
+# .edge and the .msh (Gmsh's own reader too) hold the merged .vtu's points,
+# triangles, markers and regions in its order, in memory and streamed. On
+# one rank (afmesh_2's serial mesher) each file holds afmesh_2's mesh with
+# its tags, the boundary (.poly) has afmesh_2's points, segments, markers,
+# holes and regions, and the picture (.svg) afmesh_2's frame and lines; on 3
+# ranks the boundary is the merged mesh's segments, and the picture draws
+# its edges
+mpi(3, *tagged, "--merge", "-o", "formats.node", "-o", "formats.msh", "-o", "formats.vtu", "-o", "formats.ele",
+    "-o", "formats.svg", "-o", "formats_boundary.poly")
+mpi(3, *tagged, "--stream", "--merge", "-o", "kept/formats_st.ele", "-o", "kept/formats_st.msh",
+    "-o", "kept/formats_st.vtu")
+# the same streamed with more than 2^18 triangles in each rank's scratch
+# files (a chunk of the in-step reading of the triangles and their regions)
+stats = json.loads(mpi(2, "tagged.poly", "--size", "0.0026", "--stream", "--merge", "-o", "streamed/tagged_fine.ele",
+                       "-o", "streamed/tagged_fine.msh", "-o", "streamed/tagged_fine.vtu", "--stats").stdout)
+check(all(r["triangles"] - r["held_triangles"] > 2 ** 18 for r in stats["per_rank"]),
+      "the fine tagged square: a rank streamed %s triangles, not more than one chunk" %
+      [r["triangles"] - r["held_triangles"] for r in stats["per_rank"]])
+for base in ("formats", "kept/formats_st", "streamed/tagged_fine"):
+    merged_tags = read_triangle(base)
+    check(merged_tags[3] is not None and len(set(merged_tags[3].tolist())) == 3,
+          base + ".ele: not the three regions' attributes")
+    check_formats_agree(base, *merged_tags)
+    write_off(base.replace("/", "_") + "_check.off", merged_tags[0], merged_tags[2])
+    valid("tagged.poly", base.replace("/", "_") + "_check.off", "tagged, 3 ranks, %s.node" % base)
+check(not [f for f in os.listdir("kept") if f.startswith("formats_st_") or f.endswith(".part")],
+      "--merge to .ele and .msh with --stream left files: %s" % sorted(os.listdir("kept")))
+
+
+def read_poly(path):
+    """The points (with markers) and segments (with markers) of a .poly, by coordinates; the number of holes and
+    the region lines."""
+    rows = [line.split("#")[0].split() for line in open(path)]
+    rows = [r for r in rows if r]
+    n = int(rows[0][0])
+    points = {int(r[0]): (float(r[1]), float(r[2])) for r in rows[1:n + 1]}
+    marked = {points[int(r[0])]: int(r[-1]) for r in rows[1:n + 1]}
+    k = int(rows[n + 1][0])
+    segments = {frozenset((points[int(r[1])], points[int(r[2])])): int(r[3]) for r in rows[n + 2:n + 2 + k]}
+    holes = int(rows[n + 2 + k][0])
+    regions = rows[n + 3 + k + holes:]
+    return marked, segments, holes, regions
+
+
+def svg_picture(path):
+    """The frame (the <svg> and <title> lines) of an SVG picture and the length of its stroked lines (in pixels)
+    by colour: two pictures of one mesh draw the same edges, maybe in another order and other paths."""
+    text = open(path).read()
+    check(text.rstrip().endswith("</svg>"), path + " is cut short")
+    lengths = {}
+    for attributes, d in re.findall(r'<path ([^>]*?) d="([^"]*)"', text):
+        if 'fill="none"' not in attributes:
+            continue
+        colour = re.search(r'stroke="([^"]*)"', attributes).group(1)
+        tokens = re.findall(r"[MLlz]|-?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?", d)
+        length, command, values = 0.0, None, []
+        for t in tokens + ["M"]:
+            if t in ("M", "l", "L", "z"):
+                if command == "l":
+                    length += sum(math.hypot(values[i], values[i + 1]) for i in range(0, len(values) - 1, 2))
+                command, values = t, []
+            else:
+                values.append(float(t))
+        lengths[colour] = lengths.get(colour, 0.0) + length
+    return text.splitlines()[:2], lengths
+
+
+def same_picture(a, b, label):
+    frame_a, lengths_a = svg_picture(a)
+    frame_b, lengths_b = svg_picture(b)
+    check(frame_a == frame_b, "%s: the picture's frame %s, expected %s" % (label, frame_a, frame_b))
+    check(sorted(lengths_a) == sorted(lengths_b) and len(lengths_a) >= 2 and
+          all(abs(lengths_a[c] - lengths_b[c]) <= 2e-3 * lengths_b[c] for c in lengths_b),
+          "%s: the lines drawn are %s pixels long, expected %s" % (label, lengths_a, lengths_b))
+
+
+pts, pmark, tri, attr, seg, smark = read_triangle("formats")
+marked, segments, holes, regions = read_poly("formats_boundary.poly")
+check(segments == {frozenset(map(tuple, pts[s])): int(k) for s, k in zip(seg, smark)},
+      "formats_boundary.poly: not the merged mesh's %d segments with their markers (%d)" % (len(seg), len(segments)))
+check(all(marked[tuple(p)] == int(k) for p, k in zip(pts, pmark) if tuple(p) in marked),
+      "formats_boundary.poly: a point's marker is not the mesh's")
+# on one rank, the mesh of afmesh_2 --threads 1 in every format: the
+# boundary with the same points, segments, markers, holes and regions
+# (written in the order of another triangulation), the same picture
+run(serial, *tagged, "--threads", "1", "-o", "one_ref.node", "-o", "one_ref.svg", "-o", "one_ref.poly",
+    "-o", "formats_ref.svg")
+mpi(1, *tagged, "--merge", "-o", "one.node", "-o", "one.msh", "-o", "one.vtu", "-o", "one.svg", "-o", "one.poly")
+check(read_poly("one.poly") == read_poly("one_ref.poly"), "1 rank: the .poly is not afmesh_2's boundary")
+check(read_poly("one.poly")[2:] == (holes, regions), "3 ranks: the .poly's holes and regions are not those of 1 rank (afmesh_2's)")
+same_picture("one.svg", "one_ref.svg", "1 rank")
+# on 3 ranks, the picture of the merged mesh: afmesh_2's frame, and its
+# lines as long as the mesh's edges at the picture's scale (that of the
+# one-rank picture: the same domain)
+_, one_lengths = svg_picture("one_ref.svg")
+frame, lengths = svg_picture("formats.svg")
+check(frame == svg_picture("formats_ref.svg")[0], "3 ranks: the picture's frame is not afmesh_2's: %s" % frame)
+
+
+def edge_length(points, triangles):
+    edges = {tuple(sorted((t[i], t[(i + 1) % 3]))) for t in triangles for i in range(3)}
+    return sum(math.dist(points[a], points[b]) for a, b in edges)
+
+
+one = read_triangle("one_ref")
+scale = sum(one_lengths.values()) / edge_length(one[0], one[2])
+drawn, expected = sum(lengths.values()), scale * edge_length(pts, tri)
+check(abs(drawn - expected) <= 2e-3 * expected,
+      "3 ranks: the picture's lines are %.1f pixels long, the mesh's edges %.1f" % (drawn, expected))
+one_tags = read_triangle("one")
+check_formats_agree("one", *one_tags)
+check(tagged_geometry(*one_tags) == tagged_geometry(*read_triangle("one_ref")),
+      "1 rank: the .node/.ele/.edge do not hold afmesh_2's mesh and tags")
+r = mpi(2, *tagged, "--stream", "--merge", "-o", "kept/x.svg", code=2)
+check("--stream cannot write pictures" in r.stderr, "--stream with --merge -o x.svg: " + r.stderr)
+r = mpi(2, *tagged, "--stream", "--merge", "-o", "kept/x.vtu", "-o", "kept/x.poly", code=2)
+check("--stream cannot write the boundary" in r.stderr, "--stream with --merge -o x.poly: " + r.stderr)
+r = mpi(2, *tagged, "--merge", "-o", "x.node", "-o", "no_such_directory/y.ele", code=3)
+check("cannot write no_such_directory/y.ele" in r.stderr and not os.path.exists("x.node"),
+      "a merged .ele that cannot be written (before meshing): " + r.stderr)
+r = mpi(2, *tagged, "--merge", "-o", "x.stl", code=2)
+check("unknown output format" in r.stderr, "--merge -o x.stl: " + r.stderr)
+
 # the same input turned by 30 degrees: the cuts cross sloped segments
 # between their vertices, where the crossing is rounded to either side
 

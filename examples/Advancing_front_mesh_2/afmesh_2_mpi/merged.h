@@ -10,6 +10,7 @@
 
 #include "pieces.h"
 
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -58,6 +59,20 @@ inline std::vector<std::int32_t> owned_markers(const Rank_mesh& m)
   return k;
 }
 
+// A region attribute sent among a triangle's vertex numbers: its bits.
+inline std::uint64_t attribute_bits(double attribute)
+{
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &attribute, sizeof bits);
+  return bits;
+}
+inline double attribute_of_bits(std::uint64_t bits)
+{
+  double attribute = 0;
+  std::memcpy(&attribute, &bits, sizeof attribute);
+  return attribute;
+}
+
 // One rank's share as the merged file takes it: its counts, and for each
 // array a function that hands the values to `put` in chunks, in the order
 // of the file.
@@ -73,6 +88,12 @@ struct Merged_share
   Values<std::int32_t> point_markers;     // of the owned points
   Values<std::int32_t> segment_markers;
   Values<double> triangle_regions;        // when the input has regions
+  // the same zipped, for the writers that take a vertex or a triangle
+  // whole (merged_formats.h): x, y and marker of each owned point; each
+  // triangle's vertex numbers and the bits of its region attribute (of 0
+  // without regions)
+  Values<double> marked_points;
+  Values<std::uint64_t> regioned_triangles;
 };
 
 // A share held in memory, each array in one chunk.
@@ -99,6 +120,22 @@ inline Merged_share merged_share(const Rank_mesh& m)
   s.triangle_regions = [&m](const std::function<void(const double*, std::size_t)>& put) {
     put(m.tags.regions_of_triangles.data(), m.tags.regions_of_triangles.size());
   };
+  s.marked_points = whole([&m] {
+    std::vector<double> xyk;
+    xyk.reserve(3 * m.owned_count);
+    for(std::size_t i = 0; i < m.points.size(); ++i)
+      if(m.owned[i]) xyk.insert(xyk.end(), {m.points[i][0], m.points[i][1], double(m.tags.markers[i])});
+    return xyk;
+  });
+  s.regioned_triangles = whole([&m] {
+    std::vector<std::uint64_t> t;
+    t.reserve(4 * m.triangles.size());
+    for(std::size_t k = 0; k < m.triangles.size(); ++k)
+      t.insert(t.end(), {m.global_id[m.triangles[k][0]], m.global_id[m.triangles[k][1]],
+                         m.global_id[m.triangles[k][2]],
+                         attribute_bits(m.tags.regions ? m.tags.regions_of_triangles[k] : 0.)});
+    return t;
+  });
   return s;
 }
 

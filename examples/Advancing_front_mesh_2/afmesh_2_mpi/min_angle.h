@@ -697,10 +697,12 @@ constexpr std::size_t most_refinement_rounds = 64;
 // inserted in spatial order, every edge of the triangles is inserted as a
 // constraint (so that each triangle is a face, cocircular points or not)
 // and those inside the share that are no input constraint are released.
-// Throws std::logic_error when a triangle is not a face then.
+// Throws std::logic_error when a triangle is not a face then. The vertex
+// of each point goes to `vertices`, when given.
 template <class K>
 std::vector<std::pair<std::pair<typename CDT<K>::Vertex_handle, typename CDT<K>::Vertex_handle>, bool> >
-share_triangulation(const Rank_mesh& m, const std::vector<unsigned char>& input_constraints, CDT<K>& cdt)
+share_triangulation(const Rank_mesh& m, const std::vector<unsigned char>& input_constraints, CDT<K>& cdt,
+                    std::vector<typename CDT<K>::Vertex_handle>* vertices = nullptr)
 {
   typedef typename K::Point_2 Point;
   typedef typename CDT<K>::Vertex_handle Vertex_handle;
@@ -759,6 +761,7 @@ share_triangulation(const Rank_mesh& m, const std::vector<unsigned char>& input_
       throw std::logic_error("a triangle of the share is not a face of its triangulation");
     f->set_in_domain(true);
   }
+  if(vertices != nullptr) *vertices = std::move(vertex);
   return once;
 }
 

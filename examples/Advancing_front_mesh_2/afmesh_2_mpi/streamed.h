@@ -164,6 +164,8 @@ public:
   {
     guarded([&] { file_.close(true); });
   }
+  // whether anything was put in the file (or adopted)
+  bool written() const { return exists_; }
   // reads the file back, `n` values of type T at a time, into `f(values, n)`
   template <class T, class F>
   void read(std::size_t n, const F& f) const
@@ -191,6 +193,37 @@ private:
   }
   AFM::IO::internal::Streaming_file file_;
   bool exists_ = false, kept_ = false;
+};
+
+// A scratch file read back on demand, so that two files can be gone
+// through in step (a triangle's vertices and its region attribute), which
+// Scratch_file::read() cannot do.
+template <class T>
+class Scratch_reader
+{
+public:
+  explicit Scratch_reader(const Scratch_file& f) : name_(f.name())
+  {
+    if(f.written()) is_.open(name_.c_str(), std::ios::in | std::ios::binary);
+  }
+  // up to `n` next values (fewer at the end of the file, none after it)
+  const std::vector<T>& next(std::size_t n)
+  {
+    values_.resize(n);
+    std::size_t got = 0;
+    if(is_.is_open() && is_) {
+      is_.read(reinterpret_cast<char*>(values_.data()), static_cast<std::streamsize>(n * sizeof(T)));
+      got = std::size_t(is_.gcount()) / sizeof(T);
+    }
+    if(is_.bad()) throw std::runtime_error("cannot read " + name_);
+    values_.resize(got);
+    return values_;
+  }
+
+private:
+  std::string name_;
+  std::ifstream is_;
+  std::vector<T> values_;
 };
 
 // `bytes` in `file`, durably: written to file.tmp, synced, then renamed,
@@ -962,6 +995,42 @@ Merged_share merged_share(const Part_stream<K>& s, const Streamed_share& m)
     std::vector<std::int32_t> k;
     each_segment([&](const std::array<std::uint64_t, 3>& seg) { k.push_back(std::int32_t(std::int64_t(seg[2]))); });
     put(k.data(), k.size());
+  };
+  // the points with their markers, and the triangles with the bits of
+  // their region attributes (the region file read in step with the
+  // triangles'), for the writers that take a vertex or a triangle whole
+  share.marked_points = [each_owned_point, &s](const Put_doubles& put) {
+    std::vector<double> xyk;
+    each_owned_point(
+      [&](double x, double y, double xs, double ys) { xyk.insert(xyk.end(), {x, y, double(s.tags().marker_at(xs, ys))}); },
+      [&] { put(xyk.data(), xyk.size()); xyk.clear(); });
+  };
+  share.regioned_triangles = [&s, &m, chunk, number](const Put_numbers& put) {
+    const bool regions = s.tags().has_regions();
+    Scratch_reader<std::uint32_t> vertices(s.triangles_file());
+    Scratch_reader<double> attributes(s.regions_file());
+    std::vector<std::uint64_t> t;
+    std::uint64_t read = 0;
+    for(;;) {
+      const std::vector<std::uint32_t>& v = vertices.next(3 * chunk);
+      if(v.empty()) break;
+      const std::size_t n = v.size() / 3;
+      const std::vector<double>* a = regions ? &attributes.next(n) : nullptr;
+      if(a != nullptr && a->size() != n)
+        throw std::runtime_error("the scratch file " + s.regions_file().name() + " is short");
+      for(std::size_t k = 0; k < n; ++k)
+        t.insert(t.end(), {number(v[3 * k]), number(v[3 * k + 1]), number(v[3 * k + 2]),
+                           attribute_bits(a != nullptr ? (*a)[k] : 0.)});
+      read += n;
+      put(t.data(), t.size());
+      t.clear();
+    }
+    if(read != m.streamed_triangles)
+      throw std::runtime_error("the scratch file " + s.triangles_file().name() + " is short");
+    for(std::size_t k = 0; k < m.triangles.size(); ++k)
+      t.insert(t.end(), {number(m.triangles[k][0]), number(m.triangles[k][1]), number(m.triangles[k][2]),
+                         attribute_bits(regions ? m.regions[k] : 0.)});
+    put(t.data(), t.size());
   };
   share.triangle_regions = [&s, &m, chunk](const Put_doubles& put) {
     std::uint64_t read = 0;

@@ -79,6 +79,8 @@ public:
   }
 
   bool has_regions() const { return input_.has_regions(); }
+  // the region attributes of the input, 0 included; empty without regions
+  const std::vector<double>& attributes() const { return input_.attributes(); }
   std::size_t number_of_segments() const { return input_.segments().size() + split_segments_; }
 
   // the input vertex at (x, y), or none
