@@ -550,7 +550,7 @@ inline int run(const Mpi_options& m, int rank, int ranks)
   } else {
     const auto t_merge = std::chrono::steady_clock::now();
     Interface_work<K> w;
-    merge_interfaces<K>(in, d, rank, meshed, w);
+    merge_interfaces<K>(in, d, rank, meshed, w, m.opt.min_angle);
     Rank_mesh mesh;
     double t_refining = 0; // this rank's --min-angle time, not the interfaces'
     std::uint64_t registered_splits = 0, counted_splits = 0;

@@ -24,7 +24,9 @@
 // share's triangulation is constrained Delaunay), every shared edge is too
 // (step 3 found none to split) and no triangle is below the bound but
 // where Mesh_2 leaves them (at small input angles) and at corners of the
-// shared edges sharper than the bound (split_point()): the whole mesh is
+// shared edges sharper than the bound (split_point()), which with
+// --min-angle the band sent down is grown around (round_sharp_corners() in
+// bands.h), so that none is left: the whole mesh is
 // constrained Delaunay, the shared edges released, as afmesh_2's is.
 // A point on a shared edge is inserted by both ranks with the same
 // coordinates, so the shares still meet edge to edge. With one part, the
