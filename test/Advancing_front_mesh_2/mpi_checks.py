@@ -21,6 +21,7 @@ import json
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -33,7 +34,10 @@ from tagged_files import check_formats_agree, read_triangle, tagged_geometry
 mpiexec, tool, serial, make_input, checker, work = sys.argv[1:7]
 lake = sys.argv[7] if len(sys.argv) > 7 else ""
 rounds_test = sys.argv[8] if len(sys.argv) > 8 else ""
-os.makedirs(work, exist_ok=True)
+# a fresh work directory: the checks of the kept parts and checkpoints list
+# what a stopped run left there, so files of an earlier run would fail them
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
 os.chdir(work)
 os.makedirs("streamed", exist_ok=True)
 
@@ -511,21 +515,31 @@ mpi(3, *tagged, "--merge", "-o", "formats.node", "-o", "formats.msh", "-o", "for
     "-o", "formats.svg", "-o", "formats_boundary.poly")
 mpi(3, *tagged, "--stream", "--merge", "-o", "kept/formats_st.ele", "-o", "kept/formats_st.msh",
     "-o", "kept/formats_st.vtu")
-# the same streamed with more than 2^18 triangles in each rank's scratch
-# files (a chunk of the in-step reading of the triangles and their regions)
-stats = json.loads(mpi(2, "tagged.poly", "--size", "0.0026", "--stream", "--merge", "-o", "streamed/tagged_fine.ele",
-                       "-o", "streamed/tagged_fine.msh", "-o", "streamed/tagged_fine.vtu", "--stats").stdout)
-check(all(r["triangles"] - r["held_triangles"] > 2 ** 18 for r in stats["per_rank"]),
-      "the fine tagged square: a rank streamed %s triangles, not more than one chunk" %
-      [r["triangles"] - r["held_triangles"] for r in stats["per_rank"]])
-for base in ("formats", "kept/formats_st", "streamed/tagged_fine"):
+# the same streamed in chunks of 100 points or triangles instead of 2^18,
+# so that the shares cross many chunk boundaries (the triangles and their
+# regions read in step from two scratch files; the outer ranks stream
+# thousands of triangles, the middle one holds most of its part back for
+# its two interfaces)
+os.environ["AFMESH_2_MPI_MERGE_CHUNK"] = "100"
+try:
+    stats = json.loads(mpi(3, *tagged, "--stream", "--merge", "-o", "kept/formats_chunked.node",
+                           "-o", "kept/formats_chunked.msh", "-o", "kept/formats_chunked.vtu", "--stats").stdout)
+finally:
+    del os.environ["AFMESH_2_MPI_MERGE_CHUNK"]
+check(all(r["triangles"] > 10 * 100 for r in stats["per_rank"]),
+      "tagged, chunks of 100: shares of %s triangles, not many chunks" % [r["triangles"] for r in stats["per_rank"]])
+check(all(open("kept/formats_chunked" + e, "rb").read() == open("kept/formats_st" + e, "rb").read()
+          for e in (".node", ".ele", ".edge", ".msh", ".vtu")),
+      "tagged, chunks of 100: not the files of chunks of 2^18")
+for base in ("formats", "kept/formats_st"):
     merged_tags = read_triangle(base)
     check(merged_tags[3] is not None and len(set(merged_tags[3].tolist())) == 3,
           base + ".ele: not the three regions' attributes")
     check_formats_agree(base, *merged_tags)
     write_off(base.replace("/", "_") + "_check.off", merged_tags[0], merged_tags[2])
     valid("tagged.poly", base.replace("/", "_") + "_check.off", "tagged, 3 ranks, %s.node" % base)
-check(not [f for f in os.listdir("kept") if f.startswith("formats_st_") or f.endswith(".part")],
+check(not [f for f in os.listdir("kept") if f.startswith("formats_st_") or f.startswith("formats_chunked_") or
+           f.endswith(".part")],
       "--merge to .ele and .msh with --stream left files: %s" % sorted(os.listdir("kept")))
 
 
@@ -853,6 +867,15 @@ for label, files in (("pieces", ["kept/ta_%d.vtu" % r for r in range(3)]), ("mer
 merged = meshio.read("tagged_angle.vtu")
 write_off("tagged_angle.off", merged.points[:, :2], merged.cells_dict["triangle"])
 valid("tagged.poly", "tagged_angle.off", "tagged, 3 ranks, --min-angle 30")
+# a corner of the shared edges sharper than the bound (the band sent down
+# turned at 27.7 degrees near the boundary, and one triangle stayed below
+# 30 there before the band was grown around such corners)
+stats = json.loads(mpi(2, "tagged.poly", "--size", "0.02", "--min-angle", "30", "--merge", "-o", "tagged_corner.off",
+                       "--stats").stdout)
+valid("tagged.poly", "tagged_corner.off", "tagged at 0.02, 2 ranks, --min-angle 30")
+check(stats["min_angle"]["below_after"] == 0 and stats["quality"]["min_angle_degrees"] >= 30 - 1e-9,
+      "tagged at 0.02, 2 ranks, --min-angle 30: %d triangles below the bound, the smallest angle %.2f" %
+      (stats["min_angle"]["below_after"], stats["quality"]["min_angle_degrees"]))
 # a real geometry with an input angle of 12 degrees: the one triangle left
 # below the bound is there, as afmesh_2's
 if lake and os.path.exists(lake):
@@ -867,15 +890,6 @@ if lake and os.path.exists(lake):
           abs(stats["min_angle"]["smallest_angle"] - serial_angle["quality"]["min_angle_degrees"]) <= 1e-6,
           "lake, 4 ranks, --min-angle 30: %s, afmesh_2 %s" % (stats["min_angle"], serial_angle["min_angle"]))
 # step 3 of the rounds (an edge not locally Delaunay across two ranks),
-# a corner of the shared edges sharper than the bound (the band sent down
-# turned at 27.7 degrees near the boundary, and one triangle stayed below
-# 30 there before the band was grown around such corners)
-stats = json.loads(mpi(2, "tagged.poly", "--size", "0.02", "--min-angle", "30", "--merge", "-o", "tagged_corner.off",
-                       "--stats").stdout)
-valid("tagged.poly", "tagged_corner.off", "tagged at 0.02, 2 ranks, --min-angle 30")
-check(stats["min_angle"]["below_after"] == 0 and stats["quality"]["min_angle_degrees"] >= 30 - 1e-9,
-      "tagged at 0.02, 2 ranks, --min-angle 30: %d triangles below the bound, the smallest angle %.2f" %
-      (stats["min_angle"]["below_after"], stats["quality"]["min_angle_degrees"]))
 # which these runs do not reach, on two hand-made shares
 if rounds_test:
     r = mpi(2, program=rounds_test)

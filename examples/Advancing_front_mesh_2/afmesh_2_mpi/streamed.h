@@ -38,6 +38,7 @@
 #include <array>
 #include <bitset>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -919,6 +920,18 @@ void write_streamed_piece(const std::string& pvtu, const Part_stream<K>& s, cons
   if(rank == 0) write_collection(pvtu, triangles_per_rank, ranks, s.tags().has_regions());
 }
 
+// The points or triangles of a streamed share sent to rank 0 in one chunk
+// for --merge: 2^18, or the count in the environment variable
+// AFMESH_2_MPI_MERGE_CHUNK (at least 1), with which the tests make small
+// meshes cross many chunk boundaries.
+inline std::size_t merged_share_chunk()
+{
+  const char* given = std::getenv("AFMESH_2_MPI_MERGE_CHUNK");
+  if(given == nullptr) return std::size_t(1) << 18;
+  const long long n = std::atoll(given);
+  return n >= 1 ? std::size_t(n) : std::size_t(1) << 18;
+}
+
 // This rank's share of the merged file (--merge with --stream), read from
 // its scratch files a chunk at a time as rank 0 takes each array: the
 // owned points in the order of their numbers, the triangles and segments by
@@ -932,7 +945,7 @@ Merged_share merged_share(const Part_stream<K>& s, const Streamed_share& m)
   typedef std::function<void(const std::int32_t*, std::size_t)> Put_markers;
   // a quarter of a piece's chunks: each is copied once more (its numbers
   // widened to 64 bits) before it is sent
-  const std::size_t chunk = std::size_t(1) << 18;
+  const std::size_t chunk = merged_share_chunk();
   Merged_share share;
   share.owned_vertices = m.owned.total();
   share.triangles = m.triangle_count();
