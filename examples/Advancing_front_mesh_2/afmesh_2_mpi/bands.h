@@ -72,7 +72,8 @@ double angle_at(Face_handle f, int k)
 // the vertex joins the band (the corner is then inside the band, or its
 // outer edges go around it). The band only grows, and little: over the 50
 // runs of scripts/benchmark_mpi_min_angle.sh about 20 faces joined, in at
-// most 2 passes. `most_passes` bounds it all the same, and only the faces
+// most 2 passes (counted before the limits below, with the same table).
+// `most_passes` bounds it all the same, and only the faces
 // for which `may_join(f)` holds join: those clear of the part's other band,
 // which the grown band must not meet.
 template <class K, class May_join>
